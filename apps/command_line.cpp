@@ -1,0 +1,50 @@
+#include "command_line.h"
+
+#include "usage_error.h"
+
+#include <filesystem>
+
+namespace hrsr::app {
+
+void add_preprocess_options(CLI::App& c, PreprocessOptions& o) {
+    c.add_option(
+         "--k", o.k,
+         "Neighbourhood size (true neighbours) of the orientation graph and component split")
+        ->capture_default_str();
+    c.add_option("--r", o.r,
+                 "Component split: cut neighbour edges longer than r x the mean neighbour distance")
+        ->capture_default_str();
+    c.add_option("--theta", o.theta_degrees,
+                 "Normal filter angle in degrees (tangent distance mode)")
+        ->capture_default_str();
+    c.add_option_function<std::string>(
+         "--distance",
+         [&o](const std::string& v) {
+             o.distance = v == "euclidean" ? DistanceMode::Euclidean : DistanceMode::Tangent;
+         },
+         "Edge length: tangent (smooths positions along normals) or euclidean")
+        ->transform(CLI::IsMember({"tangent", "euclidean"}, CLI::ignore_case).description(""))
+        ->type_name("tangent|euclidean")
+        ->default_str("tangent");
+    c.add_flag_function(
+        "--reestimate-normals", [&o](std::int64_t) { o.normals = NormalSource::Reestimate; },
+        "Ignore the input's normals and estimate new ones (PCA + orientation)");
+    c.add_option("--k-normals", o.k_normals,
+                 "PCA neighbours for normal estimation; 0 = automatic, clamp(N/2000, 16, 192)")
+        ->capture_default_str();
+    c.add_option("--min-component-size", o.min_component_size,
+                 "Drop connected pieces with fewer points than this (or than the whole cloud)")
+        ->capture_default_str();
+}
+
+void check_output_is_not_input(const std::string& input, const std::string& output) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const bool same = fs::exists(output, ec)
+                          ? fs::equivalent(input, output, ec)
+                          : fs::weakly_canonical(input, ec) == fs::weakly_canonical(output, ec);
+    if (same)
+        throw UsageError("the output " + output + " is the input file; refusing to overwrite it");
+}
+
+} // namespace hrsr::app

@@ -1,0 +1,58 @@
+// hrsr: surface reconstruction from point clouds (command-line tool).
+// Exit codes: 0 success, 1 unreadable or invalid input / failed output, 2 usage error.
+#include "errors.h"
+#include "normals_command.h"
+#include "usage_error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <new>
+
+namespace {
+
+int fail(int code, const char* what) {
+    std::fprintf(stderr, "hrsr: %s\n", what);
+    return code;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"hrsr " HRSR_VERSION
+                 " - Hierarchical Rotation System Reconstruction of point clouds",
+                 "hrsr"};
+    app.set_version_flag("--version", "hrsr " HRSR_VERSION);
+    app.require_subcommand(1);
+    hrsr::app::NormalsArguments normals;
+    CLI::App* normals_command = hrsr::app::add_normals_command(app, normals);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        // One line: what is wrong, and where to look.
+        std::fprintf(stderr, "hrsr: %s (see hrsr --help)\n", e.what());
+        return 2;
+    }
+
+    try {
+        if (normals_command->parsed()) hrsr::app::run_normals(normals);
+        return 0;
+    } catch (const hrsr::app::UsageError& e) {
+        return fail(2, e.what());
+    } catch (const hrsr::InvalidOption& e) {
+        return fail(2, e.what());
+    } catch (const hrsr::Error& e) { // IoError, InvalidInput, Cancelled
+        return fail(1, e.what());
+    } catch (const std::bad_alloc&) {
+        return fail(1, "out of memory");
+    } catch (const std::exception& e) {
+        return fail(1, (std::string("internal error: ") + e.what()).c_str());
+    }
+}

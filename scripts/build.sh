@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Configure and build (Release) into build/ (or $HRSR_BUILD_DIR). Assumes scripts/setup.sh ran.
+set -euo pipefail
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+BUILD=${HRSR_BUILD_DIR:-$ROOT/build}
+cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE="${HRSR_BUILD_TYPE:-Release}" "$@" >/dev/null
+cmake --build "$BUILD" -j"$(nproc)"

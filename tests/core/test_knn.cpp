@@ -1,0 +1,109 @@
+#include "graph/neighbour_graph.h"
+#include "knn.h"
+#include "samplers.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace hrsr {
+namespace {
+
+TEST(Knn, SortedByDistanceThenIndexWithoutSelf) {
+    // A square grid: many neighbours at exactly equal distances.
+    std::vector<Vec3> points;
+    for (int i = 0; i < 10; ++i)
+        for (int j = 0; j < 10; ++j) points.emplace_back(i, j, 0);
+    const KnnIndex index(points);
+    std::vector<Neighbour> found;
+    for (std::uint32_t q = 0; q < points.size(); ++q) {
+        index.neighbours_of(q, 8, found);
+        ASSERT_EQ(found.size(), 8u);
+        for (std::size_t a = 0; a < found.size(); ++a) {
+            EXPECT_NE(found[a].index, q);
+            EXPECT_DOUBLE_EQ(found[a].squared_distance,
+                             (points[found[a].index] - points[q]).SquaredNorm());
+            if (a > 0) {
+                const auto& p = found[a - 1];
+                EXPECT_TRUE(
+                    p.squared_distance < found[a].squared_distance ||
+                    (p.squared_distance == found[a].squared_distance && p.index < found[a].index));
+            }
+        }
+    }
+    // Interior point 55 = (5,5): 4 at distance 1 and 4 at sqrt 2, by index.
+    index.neighbours_of(55, 8, found);
+    std::vector<std::uint32_t> ids;
+    for (const auto& f : found) ids.push_back(f.index);
+    EXPECT_EQ(ids, (std::vector<std::uint32_t>{45, 54, 56, 65, 44, 46, 64, 66}));
+}
+
+TEST(Knn, KIsClampedToTheOtherPoints) {
+    const std::vector<Vec3> points{{0, 0, 0}, {1, 0, 0}, {0, 2, 0}};
+    const KnnIndex index(points);
+    std::vector<Neighbour> found;
+    index.neighbours_of(0, 10, found);
+    ASSERT_EQ(found.size(), 2u);
+    EXPECT_EQ(found[0].index, 1u);
+    EXPECT_EQ(found[1].index, 2u);
+    const KnnTable table = knn_table(index, 10, {});
+    EXPECT_EQ(table.k, 2);
+    EXPECT_EQ(table.size(), 3u);
+}
+
+TEST(Knn, EmptyAndSinglePointAreSafe) {
+    const std::vector<Vec3> none;
+    const KnnIndex empty(none);
+    std::vector<Neighbour> found;
+    empty.nearest(Vec3(0, 0, 0), 3, found);
+    EXPECT_TRUE(found.empty());
+    EXPECT_EQ(knn_table(empty, 5, {}).size(), 0u);
+    const std::vector<Vec3> one{{1, 2, 3}};
+    const KnnIndex single(one);
+    single.neighbours_of(0, 5, found);
+    EXPECT_TRUE(found.empty());
+}
+
+TEST(Knn, TableRowsEqualSingleQueries) {
+    const PointSet s = testing::sample_sphere(2000);
+    const KnnIndex index(s.positions);
+    const KnnTable table = knn_table(index, 12, {});
+    std::vector<Neighbour> found;
+    for (std::uint32_t i = 0; i < s.size(); i += 37) {
+        index.neighbours_of(i, 12, found);
+        for (int j = 0; j < 12; ++j) EXPECT_EQ(table.row(i)[j], found[std::size_t(j)].index);
+    }
+}
+
+TEST(NeighbourGraph, SymmetricUnionIsSymmetricSortedAndLoopFree) {
+    const PointSet s = testing::sample_torus(3000);
+    const KnnIndex index(s.positions);
+    const KnnTable table = knn_table(index, 10, {});
+    const CsrGraph g = symmetric_union(table, s.size(), {});
+    ASSERT_EQ(g.size(), s.size());
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        EXPECT_GE(g.degree(i), 10u);
+        EXPECT_TRUE(std::is_sorted(g.begin(i), g.end(i)));
+        EXPECT_EQ(std::adjacent_find(g.begin(i), g.end(i)), g.end(i)); // no repeats
+        for (const std::uint32_t* j = g.begin(i); j != g.end(i); ++j) {
+            EXPECT_NE(*j, i);
+            EXPECT_TRUE(std::binary_search(g.begin(*j), g.end(*j), std::uint32_t(i)));
+        }
+        for (int j = 0; j < table.k; ++j) // every kNN relation is an edge
+            EXPECT_TRUE(std::binary_search(g.begin(i), g.end(i), table.row(i)[j]));
+    }
+}
+
+TEST(DisjointSets, UnitesAndFinds) {
+    DisjointSets d(6);
+    EXPECT_TRUE(d.unite(0, 1));
+    EXPECT_TRUE(d.unite(2, 3));
+    EXPECT_FALSE(d.unite(1, 0));
+    EXPECT_TRUE(d.unite(1, 3));
+    EXPECT_EQ(d.find(0), d.find(2));
+    EXPECT_NE(d.find(4), d.find(0));
+    EXPECT_NE(d.find(4), d.find(5));
+}
+
+} // namespace
+} // namespace hrsr

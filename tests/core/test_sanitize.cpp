@@ -1,0 +1,114 @@
+#include "errors.h"
+#include "preprocess/sanitize.h"
+#include "samplers.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace hrsr {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+TEST(Sanitize, DropsAndCountsNonFinitePoints) {
+    PointSet s = testing::sample_sphere(100);
+    s.positions[3] = Vec3(kNaN, 0, 0);
+    s.positions[10] = Vec3(0, kInf, 0);
+    s.positions[11] = Vec3(0, 0, -kInf);
+    PreprocessReport report;
+    const SanitizedCloud c = sanitize(s, {}, report);
+    EXPECT_EQ(report.count(PointFate::NonFinite), 3u);
+    EXPECT_EQ(report.fate[3], PointFate::NonFinite);
+    EXPECT_EQ(c.positions.size(), 97u);
+    EXPECT_EQ(c.input_index.size(), 97u);
+    EXPECT_FALSE(report.warnings.empty());
+    // Normals of the finite points are still used.
+    EXPECT_EQ(report.normal_origin, NormalOrigin::Input);
+    EXPECT_EQ(c.normals.size(), 97u);
+}
+
+TEST(Sanitize, MergesExactDuplicatesIntoTheFirstOccurrence) {
+    PointSet s = testing::sample_sphere(50);
+    s.positions.push_back(s.positions[7]); // 50
+    s.normals.push_back(s.normals[7]);
+    s.positions.push_back(s.positions[7]); // 51
+    s.normals.push_back(s.normals[7]);
+    s.positions.insert(s.positions.begin(), s.positions[20]); // 0 duplicates old 20, now 21
+    s.normals.insert(s.normals.begin(), s.normals[20]);
+    PreprocessReport report;
+    const SanitizedCloud c = sanitize(s, {}, report);
+    EXPECT_EQ(report.count(PointFate::Duplicate), 3u);
+    EXPECT_EQ(report.fate[0], PointFate::Kept); // first occurrence represents
+    EXPECT_EQ(report.fate[21], PointFate::Duplicate);
+    EXPECT_EQ(report.duplicate_of[21], 0u);
+    EXPECT_EQ(report.duplicate_of[51], 8u); // old index 7 shifted by one
+    EXPECT_EQ(report.duplicate_of[52], 8u);
+    EXPECT_EQ(c.positions.size(), 50u);
+    for (std::size_t a = 1; a < c.input_index.size(); ++a)
+        EXPECT_LT(c.input_index[a - 1], c.input_index[a]);
+}
+
+TEST(Sanitize, NormalisesToUnitDiagonalAroundTheBoxCentre) {
+    PointSet s;
+    s.positions = {{1e12, 1e12, 1e12}, {1e12 + 3, 1e12, 1e12}, {1e12, 1e12 + 4, 1e12}};
+    PreprocessReport report;
+    const SanitizedCloud c = sanitize(s, {}, report);
+    EXPECT_DOUBLE_EQ(report.bbox_diagonal, 5.0);
+    EXPECT_NEAR(c.positions[0][0], -0.3, 1e-12);
+    EXPECT_NEAR(c.positions[1][0], 0.3, 1e-12);
+    EXPECT_NEAR(c.positions[2][1], 0.4, 1e-12);
+}
+
+TEST(Sanitize, EmptyOrAllInvalidIsAnError) {
+    PreprocessReport report;
+    EXPECT_THROW(sanitize(PointSet{}, {}, report), InvalidInput);
+    PointSet s;
+    s.positions = {{kNaN, 0, 0}, {0, kInf, 0}};
+    EXPECT_THROW(sanitize(s, {}, report), InvalidInput);
+}
+
+TEST(Sanitize, UnusableNormalsFallBackToEstimationWithAWarning) {
+    PreprocessReport report;
+    PointSet mismatched = testing::sample_sphere(100);
+    mismatched.normals.pop_back();
+    SanitizedCloud c = sanitize(mismatched, {}, report);
+    EXPECT_EQ(report.normal_origin, NormalOrigin::Estimated);
+    EXPECT_NE(report.normals_fallback_reason.find("99 normals for 100 points"), std::string::npos);
+    EXPECT_TRUE(c.normals.empty());
+    EXPECT_FALSE(report.warnings.empty());
+
+    for (Vec3 bad : {Vec3(0, 0, 0), Vec3(kNaN, 0, 1), Vec3(0, kInf, 0)}) {
+        PointSet s = testing::sample_sphere(100);
+        s.normals[42] = bad;
+        PreprocessReport r;
+        c = sanitize(s, {}, r);
+        EXPECT_EQ(r.normal_origin, NormalOrigin::Estimated);
+        EXPECT_TRUE(c.normals.empty());
+    }
+}
+
+TEST(Sanitize, NonUnitNormalsAreNormalisedAndCounted) {
+    PointSet s = testing::sample_sphere(100);
+    s.normals[1] *= 3.0;
+    s.normals[2] *= 1e-6;
+    PreprocessReport report;
+    const SanitizedCloud c = sanitize(s, {}, report);
+    EXPECT_EQ(report.normals_renormalised, 2u);
+    for (const Vec3& n : c.normals) EXPECT_NEAR(n.Norm(), 1.0, 1e-12);
+}
+
+TEST(Sanitize, ReestimateIgnoresInputNormals) {
+    PreprocessOptions o;
+    o.normals = NormalSource::Reestimate;
+    PreprocessReport report;
+    const SanitizedCloud c = sanitize(testing::sample_sphere(100), o, report);
+    EXPECT_EQ(report.normal_origin, NormalOrigin::Estimated);
+    EXPECT_TRUE(c.normals.empty());
+    EXPECT_TRUE(report.warnings.empty());
+}
+
+} // namespace
+} // namespace hrsr

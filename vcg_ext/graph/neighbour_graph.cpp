@@ -1,0 +1,68 @@
+#include "graph/neighbour_graph.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace hrsr {
+
+CsrGraph symmetric_union(const KnnTable& table, std::size_t n, const Execution& exec) {
+    CsrGraph g;
+    g.offsets.assign(n + 1, 0);
+    const std::size_t k = std::size_t(table.k);
+    if (k == 0) return g;
+
+    // Every relation i -> j is stored at both ends; repeats (mutual neighbours) are removed
+    // per row afterwards, so the fill order does not matter.
+    std::vector<std::uint64_t> fill(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        fill[i + 1] += k;
+        for (const std::uint32_t* j = table.row(i); j != table.row(i) + k; ++j) ++fill[*j + 1];
+    }
+    std::partial_sum(fill.begin(), fill.end(), fill.begin());
+    std::vector<std::uint32_t> raw(fill[n]);
+    std::vector<std::uint64_t> cursor(fill.begin(), fill.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) {
+        for (const std::uint32_t* j = table.row(i); j != table.row(i) + k; ++j) {
+            raw[cursor[i]++] = *j;
+            raw[cursor[*j]++] = std::uint32_t(i);
+        }
+    }
+    std::vector<std::uint64_t> unique_count(n, 0);
+    parallel_for(exec, n, [&](std::size_t i) {
+        auto first = raw.begin() + std::ptrdiff_t(fill[i]);
+        auto last = raw.begin() + std::ptrdiff_t(fill[i + 1]);
+        std::sort(first, last);
+        unique_count[i] = std::uint64_t(std::unique(first, last) - first);
+    });
+    for (std::size_t i = 0; i < n; ++i) g.offsets[i + 1] = g.offsets[i] + unique_count[i];
+    g.adjacency.resize(g.offsets[n]);
+    parallel_for(exec, n, [&](std::size_t i) {
+        std::copy_n(raw.begin() + std::ptrdiff_t(fill[i]), unique_count[i],
+                    g.adjacency.begin() + std::ptrdiff_t(g.offsets[i]));
+    });
+    return g;
+}
+
+DisjointSets::DisjointSets(std::size_t n) : parent_(n), size_(n, 1) {
+    std::iota(parent_.begin(), parent_.end(), 0u);
+}
+
+std::uint32_t DisjointSets::find(std::uint32_t x) {
+    while (parent_[x] != x) {
+        parent_[x] = parent_[parent_[x]];
+        x = parent_[x];
+    }
+    return x;
+}
+
+bool DisjointSets::unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return false;
+    if (size_[a] < size_[b]) std::swap(a, b);
+    parent_[b] = a;
+    size_[a] += size_[b];
+    return true;
+}
+
+} // namespace hrsr

@@ -1,0 +1,706 @@
+// PLY point reader: ascii and binary (both endiannesses), any element layout. Reads only the
+// vertex element's x/y/z (and nx/ny/nz when all three exist); everything else is skipped.
+#include "io/point_set_reader.h"
+#include "io/text_parsing.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace hrsr::io {
+namespace {
+
+using detail::fail;
+using detail::quote;
+
+enum class Format { Ascii, BinaryLittleEndian, BinaryBigEndian };
+enum class Type : std::uint8_t { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
+std::size_t size_of(Type type) {
+    switch (type) {
+    case Type::Int8:
+    case Type::UInt8:
+        return 1;
+    case Type::Int16:
+    case Type::UInt16:
+        return 2;
+    case Type::Int32:
+    case Type::UInt32:
+    case Type::Float32:
+        return 4;
+    case Type::Float64:
+        return 8;
+    }
+    return 1;
+}
+
+bool is_integer(Type type) {
+    return type != Type::Float32 && type != Type::Float64;
+}
+
+bool parse_type(std::string_view word, Type& type) {
+    static const std::pair<std::string_view, Type> kNames[] = {
+        {"char", Type::Int8},       {"int8", Type::Int8},       {"uchar", Type::UInt8},
+        {"uint8", Type::UInt8},     {"short", Type::Int16},     {"int16", Type::Int16},
+        {"ushort", Type::UInt16},   {"uint16", Type::UInt16},   {"int", Type::Int32},
+        {"int32", Type::Int32},     {"uint", Type::UInt32},     {"uint32", Type::UInt32},
+        {"float", Type::Float32},   {"float32", Type::Float32}, {"double", Type::Float64},
+        {"float64", Type::Float64},
+    };
+    for (const auto& [n, t] : kNames) {
+        if (n == word) {
+            type = t;
+            return true;
+        }
+    }
+    return false;
+}
+
+struct Property {
+    std::string name;
+    Type type = Type::Float32; // the item type for lists
+    bool is_list = false;
+    Type count_type = Type::UInt8;
+};
+
+struct Element {
+    std::string name;
+    std::uint64_t count = 0;
+    std::vector<Property> properties;
+
+    bool has_lists() const {
+        return std::any_of(properties.begin(), properties.end(),
+                           [](const Property& p) { return p.is_list; });
+    }
+    /// Bytes of one binary item, counting lists as their count only.
+    std::size_t min_item_size() const {
+        std::size_t size = 0;
+        for (const Property& p : properties) size += size_of(p.is_list ? p.count_type : p.type);
+        return size;
+    }
+};
+
+struct Header {
+    Format format = Format::Ascii;
+    std::vector<Element> elements;
+    std::size_t line_count = 0;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Buffered input
+
+/// The file's bytes through a large buffer: one istream call per block, not per value, and
+/// records handed out as contiguous memory.
+class ByteSource {
+public:
+    explicit ByteSource(std::istream& in) : in_(in), buffer_(kBlockSize) {}
+
+    /// Makes `n` contiguous bytes available at data(); false if the stream ends first.
+    bool ensure(std::size_t n) { return end_ - pos_ >= n || refill(n); }
+    const unsigned char* data() const { return buffer_.data() + pos_; }
+    std::size_t available() const { return end_ - pos_; }
+    void consume(std::size_t n) { pos_ += n; }
+    bool read_failed() const { return in_.bad(); }
+
+    /// Skips up to `n` bytes; returns how many there were.
+    std::uint64_t skip(std::uint64_t n) {
+        std::uint64_t skipped = 0;
+        while (skipped < n && (pos_ < end_ || refill(1))) {
+            const auto step = static_cast<std::size_t>(
+                std::min<std::uint64_t>(n - skipped, static_cast<std::uint64_t>(end_ - pos_)));
+            pos_ += step;
+            skipped += step;
+        }
+        return skipped;
+    }
+
+    /// The number of bytes left, when the stream can tell (seekable, or read to its end).
+    std::optional<std::uint64_t> remaining() {
+        if (at_end_) return available();
+        const std::streampos here = in_.tellg();
+        if (here == std::streampos(-1)) return std::nullopt;
+        in_.seekg(0, std::ios::end);
+        const std::streampos end = in_.fail() ? std::streampos(-1) : in_.tellg();
+        in_.clear();
+        in_.seekg(here);
+        if (end == std::streampos(-1) || end < here) return std::nullopt;
+        return available() + static_cast<std::uint64_t>(end - here);
+    }
+
+private:
+    static constexpr std::size_t kBlockSize = std::size_t(1) << 20;
+
+    bool refill(std::size_t n) {
+        if (pos_ > 0) {
+            std::memmove(buffer_.data(), buffer_.data() + pos_, end_ - pos_);
+            end_ -= pos_;
+            pos_ = 0;
+        }
+        if (buffer_.size() < n) buffer_.resize(std::max(n, 2 * buffer_.size()));
+        while (end_ < n && !at_end_) {
+            in_.read(reinterpret_cast<char*>(buffer_.data() + end_),
+                     static_cast<std::streamsize>(buffer_.size() - end_));
+            end_ += static_cast<std::size_t>(in_.gcount());
+            if (!in_) at_end_ = true;
+        }
+        return end_ >= n;
+    }
+
+    std::istream& in_;
+    std::vector<unsigned char> buffer_;
+    std::size_t pos_ = 0;
+    std::size_t end_ = 0;
+    bool at_end_ = false;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Header
+
+enum class LineStatus { Ok, End, TooLong };
+
+/// One header line without "\n" or "\r\n".
+LineStatus read_line(ByteSource& src, std::string& line) {
+    constexpr std::size_t kMaxLine = 64 * 1024;
+    std::size_t scanned = 0;
+    for (;;) {
+        const auto* begin = src.data();
+        const void* newline = std::memchr(begin + scanned, '\n', src.available() - scanned);
+        if (newline != nullptr) {
+            const auto length =
+                static_cast<std::size_t>(static_cast<const unsigned char*>(newline) - begin);
+            line.assign(reinterpret_cast<const char*>(begin), length);
+            src.consume(length + 1);
+            break;
+        }
+        scanned = src.available();
+        if (scanned > kMaxLine) return LineStatus::TooLong;
+        if (!src.ensure(scanned + 1)) {
+            if (scanned == 0) return LineStatus::End;
+            line.assign(reinterpret_cast<const char*>(src.data()), scanned);
+            src.consume(scanned);
+            break;
+        }
+    }
+    while (!line.empty() && detail::is_space(line.back())) line.pop_back();
+    return LineStatus::Ok;
+}
+
+class HeaderParser {
+public:
+    explicit HeaderParser(const std::string& name) : name_(name) {}
+
+    Header parse(ByteSource& src);
+
+private:
+    /// Returns true at end_header.
+    bool parse_line(std::string_view line);
+    void parse_format(detail::Tokens& tokens);
+    void parse_element(detail::Tokens& tokens);
+    void parse_property(detail::Tokens& tokens);
+    Type expect_type(detail::Tokens& tokens, const char* what);
+    [[noreturn]] void error(const std::string& what) const {
+        fail(name_, "header line " + std::to_string(header_.line_count) + ": " + what);
+    }
+
+    const std::string& name_;
+    Header header_;
+    bool has_format_ = false;
+};
+
+Header HeaderParser::parse(ByteSource& src) {
+    if (!src.ensure(1)) fail(name_, src.read_failed() ? "read error" : "empty file (0 bytes)");
+    std::string line;
+    if (!src.ensure(3) || std::memcmp(src.data(), "ply", 3) != 0 ||
+        read_line(src, line) != LineStatus::Ok || line != "ply") {
+        fail(name_, "not a PLY file (the first line is not 'ply')");
+    }
+    header_.line_count = 1;
+    for (;;) {
+        const LineStatus status = read_line(src, line);
+        ++header_.line_count;
+        if (status == LineStatus::TooLong) error("line too long; the header is malformed");
+        if (status == LineStatus::End) {
+            if (src.read_failed()) fail(name_, "read error in the header");
+            fail(name_, "missing end_header: the file ends inside the header");
+        }
+        if (parse_line(line)) break;
+    }
+    if (!has_format_) fail(name_, "the header has no 'format' line");
+    return std::move(header_);
+}
+
+bool HeaderParser::parse_line(std::string_view line) {
+    detail::Tokens tokens(line);
+    std::string_view keyword;
+    if (!tokens.next(keyword)) return false; // blank line
+    if (keyword == "end_header") return true;
+    if (keyword == "comment" || keyword == "obj_info") return false;
+    if (keyword == "format") {
+        parse_format(tokens);
+    } else if (keyword == "element") {
+        parse_element(tokens);
+    } else if (keyword == "property") {
+        parse_property(tokens);
+    } else {
+        error("unrecognised header line starting with " + quote(keyword));
+    }
+    return false;
+}
+
+void HeaderParser::parse_format(detail::Tokens& tokens) {
+    std::string_view format;
+    std::string_view version;
+    if (!tokens.next(format)) error("'format' without a format");
+    if (format == "ascii") {
+        header_.format = Format::Ascii;
+    } else if (format == "binary_little_endian") {
+        header_.format = Format::BinaryLittleEndian;
+    } else if (format == "binary_big_endian") {
+        header_.format = Format::BinaryBigEndian;
+    } else {
+        error("unknown format " + quote(format) +
+              " (expected ascii, binary_little_endian or binary_big_endian)");
+    }
+    double number = 0;
+    if (tokens.next(version) && !(detail::parse_number(version, number) && number == 1.0)) {
+        error("unsupported format version " + quote(version) + " (expected 1.0)");
+    }
+    has_format_ = true;
+}
+
+void HeaderParser::parse_element(detail::Tokens& tokens) {
+    std::string_view element_name;
+    std::string_view count;
+    if (!tokens.next(element_name) || !tokens.next(count)) {
+        error("'element' needs a name and a count");
+    }
+    Element element;
+    element.name = std::string(element_name);
+    if (!detail::parse_count(count, element.count)) {
+        error("invalid count " + quote(count) + " for element " + quote(element_name));
+    }
+    header_.elements.push_back(std::move(element));
+}
+
+Type HeaderParser::expect_type(detail::Tokens& tokens, const char* what) {
+    std::string_view word;
+    if (!tokens.next(word)) error(std::string("'property' without ") + what);
+    Type type{};
+    if (!parse_type(word, type)) error("unknown property type " + quote(word));
+    return type;
+}
+
+void HeaderParser::parse_property(detail::Tokens& tokens) {
+    if (header_.elements.empty()) error("'property' before any 'element'");
+    Property property;
+    std::string_view word;
+    detail::Tokens lookahead = tokens;
+    if (lookahead.next(word) && word == "list") {
+        tokens = lookahead;
+        property.is_list = true;
+        property.count_type = expect_type(tokens, "a list count type");
+        if (!is_integer(property.count_type)) error("the count type of a list must be an integer");
+    }
+    property.type = expect_type(tokens, "a type");
+    if (!tokens.next(word)) error("'property' without a name");
+    property.name = std::string(word);
+    header_.elements.back().properties.push_back(std::move(property));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Vertex layout
+
+constexpr int kAbsent = -1;
+
+/// Where x y z nx ny nz are among the vertex properties.
+struct VertexLayout {
+    std::array<int, 6> index{kAbsent, kAbsent, kAbsent, kAbsent, kAbsent, kAbsent};
+    int wanted = 3; // 6 with normals
+    CoordinatePrecision precision = CoordinatePrecision::Double;
+
+    /// For each property, which of x..nz it is (or kAbsent).
+    std::vector<int> targets(std::size_t property_count) const {
+        std::vector<int> t(property_count, kAbsent);
+        for (int k = 0; k < wanted; ++k) t[static_cast<std::size_t>(index[k])] = k;
+        return t;
+    }
+};
+
+VertexLayout vertex_layout(const Element& vertex, const std::string& name) {
+    static const char* const kNames[6] = {"x", "y", "z", "nx", "ny", "nz"};
+    VertexLayout layout;
+    for (int k = 0; k < 6; ++k) {
+        for (std::size_t i = 0; i < vertex.properties.size(); ++i) {
+            if (vertex.properties[i].name != kNames[k]) continue;
+            if (vertex.properties[i].is_list) {
+                fail(name,
+                     std::string("vertex property '") + kNames[k] + "' is a list, not a number");
+            }
+            layout.index[k] = static_cast<int>(i);
+            break;
+        }
+    }
+    for (int k = 0; k < 3; ++k) {
+        if (layout.index[k] == kAbsent) {
+            fail(name, std::string("vertex element has no '") + kNames[k] + "' property");
+        }
+    }
+    const bool normals =
+        layout.index[3] != kAbsent && layout.index[4] != kAbsent && layout.index[5] != kAbsent;
+    layout.wanted = normals ? 6 : 3;
+    const auto is_float = [&](int k) {
+        return vertex.properties[static_cast<std::size_t>(layout.index[k])].type == Type::Float32;
+    };
+    layout.precision = is_float(0) && is_float(1) && is_float(2) ? CoordinatePrecision::Float
+                                                                 : CoordinatePrecision::Double;
+    return layout;
+}
+
+/// Reserves room for the vertices, but never more than the rest of the file can hold: a header
+/// may claim 10^15 vertices.
+void reserve_vertices(PointSet& points, std::uint64_t count, std::size_t min_item_bytes,
+                      std::optional<std::uint64_t> remaining, bool normals) {
+    constexpr std::uint64_t kUnknownSizeReserve = 1 << 16;
+    std::uint64_t n = count;
+    if (remaining) {
+        n = std::min(n, *remaining / std::max<std::size_t>(min_item_bytes, 1));
+    } else {
+        n = std::min(n, kUnknownSizeReserve);
+    }
+    points.positions.reserve(static_cast<std::size_t>(n));
+    if (normals) points.normals.reserve(static_cast<std::size_t>(n));
+}
+
+void store(PointSet& points, const double* v, int wanted) {
+    points.positions.emplace_back(v[0], v[1], v[2]);
+    if (wanted == 6) points.normals.emplace_back(v[3], v[4], v[5]);
+}
+
+std::string item_label(const Element& element, std::uint64_t item) {
+    const std::string quoted = quote(element.name); // names come from the file: sanitise
+    return quoted.substr(1, quoted.size() - 2) + " " + std::to_string(item + 1) + " of " +
+           std::to_string(element.count);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Binary data
+
+bool host_is_big_endian() {
+    const std::uint16_t one = 1;
+    unsigned char first = 0;
+    std::memcpy(&first, &one, 1);
+    return first == 0;
+}
+
+template <class U>
+U load_bits(const unsigned char* p, bool swap) {
+    U u;
+    std::memcpy(&u, p, sizeof u);
+    if (swap) {
+        U r = 0;
+        for (std::size_t i = 0; i < sizeof u; ++i) {
+            r = static_cast<U>((r << 8) | ((u >> (8 * i)) & 0xffu));
+        }
+        u = r;
+    }
+    return u;
+}
+
+double load_scalar(const unsigned char* p, Type type, bool swap) {
+    switch (type) {
+    case Type::Int8:
+        return static_cast<std::int8_t>(p[0]);
+    case Type::UInt8:
+        return p[0];
+    case Type::Int16:
+        return static_cast<std::int16_t>(load_bits<std::uint16_t>(p, swap));
+    case Type::UInt16:
+        return load_bits<std::uint16_t>(p, swap);
+    case Type::Int32:
+        return static_cast<std::int32_t>(load_bits<std::uint32_t>(p, swap));
+    case Type::UInt32:
+        return load_bits<std::uint32_t>(p, swap);
+    case Type::Float32: {
+        const std::uint32_t bits = load_bits<std::uint32_t>(p, swap);
+        float f;
+        std::memcpy(&f, &bits, sizeof f);
+        return f;
+    }
+    case Type::Float64: {
+        const std::uint64_t bits = load_bits<std::uint64_t>(p, swap);
+        double d;
+        std::memcpy(&d, &bits, sizeof d);
+        return d;
+    }
+    }
+    return 0;
+}
+
+class BinaryReader {
+public:
+    BinaryReader(ByteSource& src, Format format, const std::string& name)
+        : src_(src), swap_((format == Format::BinaryBigEndian) != host_is_big_endian()),
+          name_(name) {}
+
+    void skip_element(const Element& element);
+    void read_vertices(const Element& vertex, const VertexLayout& layout, PointSet& points);
+
+private:
+    /// Reads one item property by property (needed when it has lists); values[targets[i]]
+    /// receives property i when targets[i] != kAbsent. False if the data ends first.
+    bool read_item(const Element& element, std::uint64_t item, const std::vector<int>& targets,
+                   double* values);
+    void read_fixed_vertices(const Element& vertex, const VertexLayout& layout, PointSet& points);
+    [[noreturn]] void truncated(const Element& element, std::uint64_t item) const {
+        if (src_.read_failed()) fail(name_, "read error in " + item_label(element, item));
+        fail(name_, "truncated binary data: " + item_label(element, item) + " is incomplete");
+    }
+
+    ByteSource& src_;
+    bool swap_;
+    const std::string& name_;
+};
+
+void BinaryReader::skip_element(const Element& element) {
+    if (element.properties.empty() || element.count == 0) return;
+    if (element.has_lists()) {
+        const std::vector<int> none(element.properties.size(), kAbsent);
+        for (std::uint64_t i = 0; i < element.count; ++i) {
+            if (!read_item(element, i, none, nullptr)) truncated(element, i);
+        }
+        return;
+    }
+    const std::uint64_t size = element.min_item_size();
+    // A lying count may overflow count * size; such data cannot exist anyway.
+    const std::uint64_t items =
+        std::min(element.count, std::numeric_limits<std::uint64_t>::max() / size);
+    const std::uint64_t skipped = src_.skip(items * size);
+    if (skipped < items * size || items < element.count) truncated(element, skipped / size);
+}
+
+bool BinaryReader::read_item(const Element& element, std::uint64_t item,
+                             const std::vector<int>& targets, double* values) {
+    for (std::size_t i = 0; i < element.properties.size(); ++i) {
+        const Property& property = element.properties[i];
+        if (!property.is_list) {
+            const std::size_t size = size_of(property.type);
+            if (!src_.ensure(size)) return false;
+            if (targets[i] != kAbsent) {
+                values[targets[i]] = load_scalar(src_.data(), property.type, swap_);
+            }
+            src_.consume(size);
+            continue;
+        }
+        const std::size_t count_size = size_of(property.count_type);
+        if (!src_.ensure(count_size)) return false;
+        const double count = load_scalar(src_.data(), property.count_type, swap_);
+        if (count < 0) {
+            fail(name_, "negative list length " + std::to_string(static_cast<long long>(count)) +
+                            " in " + item_label(element, item) + ", property '" + property.name +
+                            "'");
+        }
+        src_.consume(count_size);
+        const auto bytes = static_cast<std::uint64_t>(count) * size_of(property.type);
+        if (src_.skip(bytes) != bytes) return false;
+    }
+    return true;
+}
+
+void BinaryReader::read_vertices(const Element& vertex, const VertexLayout& layout,
+                                 PointSet& points) {
+    reserve_vertices(points, vertex.count, vertex.min_item_size(), src_.remaining(),
+                     layout.wanted == 6);
+    if (!vertex.has_lists()) {
+        read_fixed_vertices(vertex, layout, points);
+        return;
+    }
+    const std::vector<int> targets = layout.targets(vertex.properties.size());
+    double values[6] = {};
+    for (std::uint64_t i = 0; i < vertex.count; ++i) {
+        if (!read_item(vertex, i, targets, values)) truncated(vertex, i);
+        store(points, values, layout.wanted);
+    }
+}
+
+/// The common case: every vertex has the same size, so decode at fixed offsets.
+void BinaryReader::read_fixed_vertices(const Element& vertex, const VertexLayout& layout,
+                                       PointSet& points) {
+    std::array<std::size_t, 6> offset{};
+    std::array<Type, 6> type{};
+    for (int k = 0; k < layout.wanted; ++k) {
+        const auto index = static_cast<std::size_t>(layout.index[k]);
+        for (std::size_t i = 0; i < index; ++i) offset[k] += size_of(vertex.properties[i].type);
+        type[k] = vertex.properties[index].type;
+    }
+    const std::size_t size = vertex.min_item_size();
+    double values[6] = {};
+    for (std::uint64_t i = 0; i < vertex.count; ++i) {
+        if (!src_.ensure(size)) truncated(vertex, i);
+        const unsigned char* record = src_.data();
+        for (int k = 0; k < layout.wanted; ++k) {
+            values[k] = load_scalar(record + offset[k], type[k], swap_);
+        }
+        store(points, values, layout.wanted);
+        src_.consume(size);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Ascii data
+
+/// The data section as a stream of whitespace-separated tokens: the PLY spec does not tie items
+/// to lines. Counts lines for error messages.
+class AsciiReader {
+public:
+    AsciiReader(ByteSource& src, std::size_t header_lines, const std::string& name)
+        : src_(src), line_(header_lines + 1), name_(name) {}
+
+    void skip_element(const Element& element);
+    void read_vertices(const Element& vertex, const VertexLayout& layout, PointSet& points);
+
+private:
+    void read_item(const Element& element, std::uint64_t item, const std::vector<int>& targets,
+                   double* values);
+    /// The next token, or a "truncated" error naming the item.
+    std::string_view token(const Element& element, std::uint64_t item);
+    bool next_token(std::string_view& token);
+    double number(std::string_view token, Type type, const Element& element, std::uint64_t item,
+                  const Property& property) const;
+
+    ByteSource& src_;
+    std::size_t line_;
+    const std::string& name_;
+};
+
+bool AsciiReader::next_token(std::string_view& token) {
+    constexpr std::size_t kMaxToken = 4096;
+    for (;;) { // skip whitespace
+        if (src_.available() == 0 && !src_.ensure(1)) return false;
+        const unsigned char* p = src_.data();
+        const std::size_t n = src_.available();
+        std::size_t i = 0;
+        for (; i < n && detail::is_space(static_cast<char>(p[i])); ++i) {
+            if (p[i] == '\n') ++line_;
+        }
+        src_.consume(i);
+        if (i < n) break;
+    }
+    std::size_t length = 0;
+    for (;;) {
+        const unsigned char* p = src_.data();
+        const std::size_t n = src_.available();
+        while (length < n && !detail::is_space(static_cast<char>(p[length]))) ++length;
+        if (length < n) break;
+        if (length > kMaxToken) {
+            fail(name_, "line " + std::to_string(line_) + ": value too long: " +
+                            quote(std::string_view(reinterpret_cast<const char*>(p), length)));
+        }
+        if (!src_.ensure(length + 1)) break; // the last token of the file
+    }
+    token = std::string_view(reinterpret_cast<const char*>(src_.data()), length);
+    src_.consume(length);
+    return true;
+}
+
+std::string_view AsciiReader::token(const Element& element, std::uint64_t item) {
+    std::string_view t;
+    if (!next_token(t)) {
+        if (src_.read_failed()) fail(name_, "read error in " + item_label(element, item));
+        fail(name_, "truncated ascii data: the file ends in " + item_label(element, item) +
+                        " (line " + std::to_string(line_) + ")");
+    }
+    return t;
+}
+
+double AsciiReader::number(std::string_view token, Type type, const Element& element,
+                           std::uint64_t item, const Property& property) const {
+    bool ok = false;
+    double value = 0;
+    if (type == Type::Float32) { // parse as float directly: no double rounding
+        float f = 0;
+        ok = detail::parse_number(token, f);
+        value = f;
+    } else {
+        ok = detail::parse_number(token, value);
+    }
+    if (!ok) {
+        fail(name_, "line " + std::to_string(line_) + ": " + quote(token) + " is not a number (" +
+                        item_label(element, item) + ", property '" + property.name + "')");
+    }
+    return value;
+}
+
+void AsciiReader::read_item(const Element& element, std::uint64_t item,
+                            const std::vector<int>& targets, double* values) {
+    for (std::size_t i = 0; i < element.properties.size(); ++i) {
+        const Property& property = element.properties[i];
+        if (!property.is_list) {
+            const double value =
+                number(token(element, item), property.type, element, item, property);
+            if (targets[i] != kAbsent) values[targets[i]] = value;
+            continue;
+        }
+        const std::string_view count_token = token(element, item);
+        std::uint64_t count = 0;
+        if (!detail::parse_count(count_token, count)) {
+            fail(name_, "line " + std::to_string(line_) + ": invalid list length " +
+                            quote(count_token) + " (" + item_label(element, item) + ", property '" +
+                            property.name + "')");
+        }
+        for (std::uint64_t j = 0; j < count; ++j) {
+            number(token(element, item), property.type, element, item, property);
+        }
+    }
+}
+
+void AsciiReader::skip_element(const Element& element) {
+    if (element.properties.empty()) return;
+    const std::vector<int> none(element.properties.size(), kAbsent);
+    for (std::uint64_t i = 0; i < element.count; ++i) read_item(element, i, none, nullptr);
+}
+
+void AsciiReader::read_vertices(const Element& vertex, const VertexLayout& layout,
+                                PointSet& points) {
+    // At least one character and one separator per value.
+    reserve_vertices(points, vertex.count, 2 * vertex.properties.size(), src_.remaining(),
+                     layout.wanted == 6);
+    const std::vector<int> targets = layout.targets(vertex.properties.size());
+    double values[6] = {};
+    for (std::uint64_t i = 0; i < vertex.count; ++i) {
+        read_item(vertex, i, targets, values);
+        store(points, values, layout.wanted);
+    }
+}
+
+PointSet read_ply_unguarded(std::istream& in, const std::string& name) {
+    ByteSource src(in);
+    const Header header = HeaderParser(name).parse(src);
+    const auto vertex = std::find_if(header.elements.begin(), header.elements.end(),
+                                     [](const Element& e) { return e.name == "vertex"; });
+    if (vertex == header.elements.end()) fail(name, "the header has no 'vertex' element");
+    const VertexLayout layout = vertex_layout(*vertex, name);
+
+    PointSet points;
+    points.precision = layout.precision;
+    if (header.format == Format::Ascii) {
+        AsciiReader reader(src, header.line_count, name);
+        for (auto e = header.elements.begin(); e != vertex; ++e) reader.skip_element(*e);
+        reader.read_vertices(*vertex, layout, points);
+    } else {
+        BinaryReader reader(src, header.format, name);
+        for (auto e = header.elements.begin(); e != vertex; ++e) reader.skip_element(*e);
+        reader.read_vertices(*vertex, layout, points);
+    }
+    return points; // later elements (faces, ...) are not needed
+}
+
+} // namespace
+
+PointSet read_ply(std::istream& in, const std::string& name) {
+    return detail::guarded_read(name, [&] { return read_ply_unguarded(in, name); });
+}
+
+} // namespace hrsr::io

@@ -1,0 +1,25 @@
+// Writing clouds and meshes as binary little-endian PLY, atomically.
+#pragma once
+
+#include "point_set.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hrsr::io {
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+/// Writes positions (float or double x/y/z as `precision` says, so inputs round-trip
+/// bit-exactly), optional normals (float nx/ny/nz; empty = none) and optional triangles
+/// (list uchar int vertex_indices; empty = point cloud). `normals`, when given, must have the
+/// size of `positions`; triangle indices must be < positions.size() (std::invalid_argument
+/// otherwise). Written through a temporary file in the destination folder and renamed, so the
+/// destination is either complete or untouched. Throws hrsr::IoError on failure.
+void write_ply(const std::string& path, const std::vector<Vec3>& positions,
+               const std::vector<Vec3>& normals, const std::vector<Triangle>& triangles,
+               CoordinatePrecision precision);
+
+} // namespace hrsr::io

@@ -1,0 +1,48 @@
+// Choosing a reader by file extension.
+#include "io/point_set_reader.h"
+#include "io/text_parsing.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace hrsr::io {
+namespace {
+
+using Reader = PointSet (*)(std::istream&, const std::string&);
+
+Reader reader_for(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".ply") return read_ply;
+    if (ext == ".xyz" || ext == ".txt") return read_xyz;
+    if (ext == ".obj") return read_obj;
+    detail::fail(path, (ext.empty() ? std::string("no file extension")
+                                    : "unknown file extension " + detail::quote(ext)) +
+                           " (supported: .ply, .xyz, .txt, .obj)");
+}
+
+} // namespace
+
+PointSet read_point_set(const std::string& path) {
+    return detail::guarded_read(path, [&] {
+        std::error_code ec;
+        if (std::filesystem::is_directory(path, ec)) {
+            detail::fail(path, "is a directory, not a point cloud file");
+        }
+        const Reader read = reader_for(path);
+        errno = 0;
+        std::ifstream in(path, std::ios::binary);
+        if (!in) {
+            detail::fail(path, std::string("cannot open: ") +
+                                   (errno != 0 ? std::strerror(errno) : "unknown error"));
+        }
+        return read(in, path);
+    });
+}
+
+} // namespace hrsr::io

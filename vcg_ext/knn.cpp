@@ -1,0 +1,76 @@
+#include "knn.h"
+
+#include <vcg/space/index/kdtree/kdtree.h>
+
+#include <algorithm>
+
+namespace hrsr {
+
+struct KnnIndex::Tree {
+    explicit Tree(const std::vector<Vec3>& points)
+        : kd(vcg::ConstDataWrapper<Vec3>(points.data(), int(points.size()))) {}
+    vcg::KdTree<double> kd;
+};
+
+KnnIndex::KnnIndex(const std::vector<Vec3>& points) : points_(points), size_(points.size()) {
+    // vcg's constructor reads points[0]: an empty tree must never be built.
+    if (!points_.empty()) tree_ = std::make_unique<Tree>(points_);
+}
+
+KnnIndex::~KnnIndex() = default;
+
+namespace {
+// vcg returns a max-heap; ties at equal distance come in traversal order. Sorting by
+// (distance, index) gives one order for everybody (D-10).
+void sort_neighbours(std::vector<Neighbour>& out) {
+    std::sort(out.begin(), out.end(), [](const Neighbour& a, const Neighbour& b) {
+        return a.squared_distance < b.squared_distance ||
+               (a.squared_distance == b.squared_distance && a.index < b.index);
+    });
+}
+} // namespace
+
+void KnnIndex::nearest(const Vec3& p, int k, std::vector<Neighbour>& out) const {
+    out.clear();
+    if (!tree_ || k <= 0) return;
+    const int wanted = int(std::min<std::size_t>(std::size_t(k), size_));
+    vcg::KdTree<double>::PriorityQueue queue;
+    tree_->kd.doQueryK(p, wanted, queue);
+    out.reserve(std::size_t(queue.getNofElements()));
+    for (int e = 0; e < queue.getNofElements(); ++e) {
+        const auto idx = std::uint32_t(queue.getIndex(e));
+        // Recomputed here in double: the distances are then exactly those the callers compare.
+        out.push_back({idx, (points_[idx] - p).SquaredNorm()});
+    }
+    sort_neighbours(out);
+}
+
+void KnnIndex::neighbours_of(std::uint32_t i, int k, std::vector<Neighbour>& out) const {
+    const int wanted = int(std::min<std::size_t>(std::size_t(std::max(k, 0)), size_ - 1));
+    nearest(points_[i], wanted + 1, out);
+    auto self =
+        std::find_if(out.begin(), out.end(), [i](const Neighbour& n) { return n.index == i; });
+    if (self != out.end()) {
+        out.erase(self);
+    } else if (!out.empty()) {
+        out.pop_back(); // only with more than `wanted` exact duplicates of point i
+    }
+    if (out.size() > std::size_t(wanted)) out.resize(std::size_t(wanted));
+}
+
+KnnTable knn_table(const KnnIndex& index, int k, const Execution& exec) {
+    KnnTable table;
+    const std::size_t n = index.size();
+    if (n < 2 || k <= 0) return table;
+    table.k = int(std::min<std::size_t>(std::size_t(k), n - 1));
+    table.index.resize(n * std::size_t(table.k));
+    parallel_for(exec, n, [&](std::size_t i) {
+        thread_local std::vector<Neighbour> found;
+        index.neighbours_of(std::uint32_t(i), table.k, found);
+        std::uint32_t* row = table.index.data() + i * std::size_t(table.k);
+        for (int j = 0; j < table.k; ++j) row[j] = found[std::size_t(j)].index;
+    });
+    return table;
+}
+
+} // namespace hrsr

@@ -1,0 +1,56 @@
+// k-nearest-neighbour queries on one point set through vcglib's KdTree, with results ordered by
+// (distance, index) so that every consumer is deterministic whatever the thread count.
+#pragma once
+
+#include "parallel.h"
+#include "point_set.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace hrsr {
+
+struct Neighbour {
+    std::uint32_t index;
+    double squared_distance;
+};
+
+/// A kd-tree over a fixed set of points. The tree copies the coordinates (rebuild it after
+/// moving points), but distances are recomputed from `points`, which must outlive the index.
+class KnnIndex {
+public:
+    explicit KnnIndex(const std::vector<Vec3>& points);
+    ~KnnIndex();
+    KnnIndex(const KnnIndex&) = delete;
+    KnnIndex& operator=(const KnnIndex&) = delete;
+
+    std::size_t size() const { return size_; }
+
+    /// The min(k, size − 1) nearest neighbours of data point `i`, never `i` itself, sorted by
+    /// (squared distance, index). `out` is overwritten. Thread-safe.
+    void neighbours_of(std::uint32_t i, int k, std::vector<Neighbour>& out) const;
+    /// The min(k, size) nearest data points to an arbitrary position, sorted likewise.
+    void nearest(const Vec3& p, int k, std::vector<Neighbour>& out) const;
+
+private:
+    struct Tree;
+    std::unique_ptr<Tree> tree_;
+    const std::vector<Vec3>& points_;
+    std::size_t size_ = 0;
+};
+
+/// The k nearest neighbours of every point, fixed stride: row i is
+/// index[i * k .. i * k + k), with k = min(requested, N − 1), sorted by (distance, index).
+struct KnnTable {
+    int k = 0;
+    std::vector<std::uint32_t> index;
+
+    std::size_t size() const { return k == 0 ? 0 : index.size() / std::size_t(k); }
+    const std::uint32_t* row(std::size_t i) const { return index.data() + i * std::size_t(k); }
+};
+
+/// Computes the table in parallel (per-point queries, results written by index).
+KnnTable knn_table(const KnnIndex& index, int k, const Execution& exec);
+
+} // namespace hrsr

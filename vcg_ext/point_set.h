@@ -1,0 +1,28 @@
+// A point cloud as it comes from a file or a MeshLab layer, before any cleaning.
+#pragma once
+
+#include <vcg/space/point3.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace hrsr {
+
+/// Double precision everywhere inside the algorithm (ALGORITHM.md D-2).
+using Vec3 = vcg::Point3d;
+
+/// How the source stored its coordinates, so that writers can reproduce them bit-exactly.
+enum class CoordinatePrecision { Float, Double };
+
+/// Raw input points. `normals` is empty when the source had none; its size is *not* guaranteed
+/// to match `positions` (a file may lie): sanitising (preprocess/sanitize.h) checks it.
+struct PointSet {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;
+    CoordinatePrecision precision = CoordinatePrecision::Float;
+
+    std::size_t size() const { return positions.size(); }
+    bool has_normals() const { return !normals.empty(); }
+};
+
+} // namespace hrsr

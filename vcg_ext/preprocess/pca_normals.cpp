@@ -1,0 +1,94 @@
+#include "preprocess/pca_normals.h"
+
+#include "options.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cstdint>
+
+namespace hrsr {
+
+int pca_neighbour_count(std::size_t n, int requested) {
+    using namespace constants;
+    const std::size_t automatic =
+        std::clamp<std::size_t>(n / kPcaPointsPerNeighbour, kPcaMinNeighbours, kPcaMaxNeighbours);
+    const std::size_t wanted = requested > 0 ? std::size_t(requested) : automatic;
+    return int(std::min(wanted, n > 0 ? n - 1 : 0));
+}
+
+namespace {
+
+// Returns false when the normal is undefined (all points on a line, or a single point).
+bool pca_normal(const std::vector<Vec3>& positions, std::uint32_t self,
+                const std::vector<Neighbour>& neighbours, Vec3& normal) {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    auto at = [&](std::uint32_t i) {
+        const Vec3& p = positions[i];
+        return Eigen::Vector3d(p[0], p[1], p[2]);
+    };
+    centroid += at(self);
+    for (const Neighbour& nb : neighbours) centroid += at(nb.index);
+    centroid /= double(neighbours.size() + 1);
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    auto accumulate = [&](std::uint32_t i) {
+        const Eigen::Vector3d d = at(i) - centroid;
+        covariance += d * d.transpose();
+    };
+    accumulate(self);
+    for (const Neighbour& nb : neighbours) accumulate(nb.index);
+
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+    const Eigen::Vector3d& lambda = solver.eigenvalues(); // ascending
+    if (solver.info() != Eigen::Success || !(lambda[2] > 0) ||
+        lambda[1] <= constants::kPcaDegenerateRatio * lambda[2])
+        return false;
+    const Eigen::Vector3d n = solver.eigenvectors().col(0).normalized();
+    normal = Vec3(n[0], n[1], n[2]);
+    return true;
+}
+
+// D-5: a degenerate point copies the normal of the nearest point with a defined one.
+void copy_from_nearest_valid(const std::vector<Vec3>& positions,
+                             const std::vector<std::uint8_t>& valid, std::vector<Vec3>& normals,
+                             const Execution& exec) {
+    std::vector<Vec3> valid_points;
+    std::vector<std::uint32_t> valid_index;
+    for (std::uint32_t i = 0; i < positions.size(); ++i)
+        if (valid[i]) {
+            valid_points.push_back(positions[i]);
+            valid_index.push_back(i);
+        }
+    const KnnIndex valid_tree(valid_points);
+    parallel_for(exec, positions.size(), [&](std::size_t i) {
+        if (valid[i]) return;
+        thread_local std::vector<Neighbour> found;
+        valid_tree.nearest(positions[i], 1, found);
+        normals[i] = normals[valid_index[found.front().index]];
+    });
+}
+
+} // namespace
+
+PcaNormals estimate_normals(const std::vector<Vec3>& positions, const KnnIndex& index,
+                            int neighbours, const Execution& exec) {
+    PcaNormals result;
+    const std::size_t n = positions.size();
+    result.normals.assign(n, Vec3(0, 0, 0));
+    std::vector<std::uint8_t> valid(n, 0);
+    parallel_for(exec, n, [&](std::size_t i) {
+        thread_local std::vector<Neighbour> found;
+        index.neighbours_of(std::uint32_t(i), neighbours, found);
+        valid[i] = pca_normal(positions, std::uint32_t(i), found, result.normals[i]) ? 1 : 0;
+    });
+    const std::size_t valid_count = std::size_t(std::count(valid.begin(), valid.end(), 1));
+    result.degenerate = n - valid_count;
+    if (valid_count == 0) {
+        result.normals.clear();
+    } else if (valid_count < n) {
+        copy_from_nearest_valid(positions, valid, result.normals, exec);
+    }
+    return result;
+}
+
+} // namespace hrsr

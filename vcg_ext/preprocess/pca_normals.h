@@ -1,0 +1,26 @@
+// Unoriented normals by principal component analysis (Hoppe et al. 1992; ALGORITHM.md §4.3, D-5).
+#pragma once
+
+#include "knn.h"
+
+#include <vector>
+
+namespace hrsr {
+
+struct PcaNormals {
+    std::vector<Vec3> normals; ///< unit, unoriented; empty when no point had a defined normal
+    std::size_t degenerate =
+        0; ///< points whose neighbourhood is (nearly) collinear or a single point
+};
+
+/// PCA neighbourhood for a cloud of n points: `requested` if > 0, else clamp(n / 2000, 16, 192)
+/// (D-5); never more than n − 1.
+int pca_neighbour_count(std::size_t n, int requested);
+
+/// For each point: the smallest-eigenvalue eigenvector of the covariance of the point and its
+/// `neighbours` nearest neighbours. A point whose covariance is degenerate takes the normal of
+/// the nearest point that has a defined one (D-5). When no point has one, `normals` is empty.
+PcaNormals estimate_normals(const std::vector<Vec3>& positions, const KnnIndex& index,
+                            int neighbours, const Execution& exec);
+
+} // namespace hrsr

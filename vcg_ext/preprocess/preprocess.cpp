@@ -1,0 +1,175 @@
+#include "preprocess/preprocess.h"
+
+#include "errors.h"
+#include "knn.h"
+#include "preprocess/components.h"
+#include "preprocess/orientation.h"
+#include "preprocess/pca_normals.h"
+#include "preprocess/smoothing.h"
+
+#include <chrono>
+#include <memory>
+#include <string>
+
+namespace hrsr {
+
+namespace {
+
+// Starts a phase: progress, and a timing entry in the report when it ends.
+class Phase {
+public:
+    Phase(const Execution& exec, PreprocessReport& report, std::string name)
+        : report_(report), name_(std::move(name)), start_(std::chrono::steady_clock::now()) {
+        if (exec.progress) exec.progress->begin(name_);
+    }
+    ~Phase() {
+        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start_;
+        report_.timings.emplace_back(name_, elapsed.count());
+    }
+
+private:
+    PreprocessReport& report_;
+    std::string name_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+std::vector<Vec3> estimate(const std::vector<Vec3>& positions, const KnnIndex& index,
+                           const PreprocessOptions& options, const Execution& exec,
+                           PreprocessReport& report) {
+    Phase phase(exec, report, "normal estimation");
+    if (positions.size() < 3) {
+        for (PointFate& f : report.fate)
+            if (f == PointFate::Kept) f = PointFate::NoNormal;
+        throw InvalidInput("only " + std::to_string(positions.size()) +
+                           " distinct point(s): at least 3 are needed to estimate normals");
+    }
+    report.pca_neighbours = pca_neighbour_count(positions.size(), options.k_normals);
+    PcaNormals pca = estimate_normals(positions, index, report.pca_neighbours, exec);
+    report.pca_degenerate = pca.degenerate;
+    if (pca.normals.empty()) {
+        for (PointFate& f : report.fate)
+            if (f == PointFate::Kept) f = PointFate::NoNormal;
+        throw InvalidInput("cannot estimate normals: all " + std::to_string(positions.size()) +
+                           " distinct points lie on one line (PCA is undefined); give the cloud "
+                           "normals or add points off the line");
+    }
+    return std::move(pca.normals);
+}
+
+void smooth(std::vector<Vec3>& positions, const std::vector<Vec3>& normals, const KnnIndex& index,
+            bool oriented, const Execution& exec, PreprocessReport& report) {
+    Phase phase(exec, report, "smoothing");
+    SmoothingResult s = smooth_along_normals(positions, normals, index, oriented, exec);
+    positions = std::move(s.positions);
+    ++report.smoothing_rounds;
+    report.smoothing_mean_shift = s.mean_shift; // normalised units = fraction of the diagonal
+    report.smoothing_max_shift = s.max_shift;
+}
+
+// A duplicate is wherever its representative went (kept, or dropped with it).
+void propagate_fates_to_duplicates(PreprocessReport& report) {
+    for (std::size_t i = 0; i < report.fate.size(); ++i)
+        if (report.fate[i] == PointFate::Duplicate &&
+            report.fate[report.duplicate_of[i]] != PointFate::Kept)
+            report.fate[i] = report.fate[report.duplicate_of[i]];
+}
+
+} // namespace
+
+CsrGraph neighbour_graph(const std::vector<Vec3>& positions, int k, const Execution& exec) {
+    const KnnIndex index(positions);
+    return symmetric_union(knn_table(index, k, exec), positions.size(), exec);
+}
+
+PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& options,
+                             const Execution& exec, PreprocessReport& report, CsrGraph* graph) {
+    validate(options);
+    PreparedCloud cloud;
+    {
+        Phase phase(exec, report, "validation");
+        SanitizedCloud clean = sanitize(input, options, report);
+        cloud.input_index = std::move(clean.input_index);
+        cloud.positions = std::move(clean.positions);
+        cloud.normals = std::move(clean.normals);
+        cloud.normalisation = clean.normalisation;
+    }
+    const bool estimated = report.normal_origin == NormalOrigin::Estimated;
+    const bool tangent = options.distance == DistanceMode::Tangent;
+    cloud.smoothed = cloud.positions;
+
+    // Schedule of §4.4: each round reads the previous round's positions through a kd-tree
+    // built on them; with estimated normals they are re-estimated after each round.
+    auto index = std::make_unique<KnnIndex>(cloud.smoothed);
+    if (estimated) cloud.normals = estimate(cloud.smoothed, *index, options, exec, report);
+    if (tangent) {
+        for (int round = 0; round < 2; ++round) {
+            smooth(cloud.smoothed, cloud.normals, *index, !estimated, exec, report);
+            index = std::make_unique<KnnIndex>(cloud.smoothed);
+            if (estimated) cloud.normals = estimate(cloud.smoothed, *index, options, exec, report);
+        }
+    }
+    if (report.pca_degenerate > 0)
+        report.warnings.push_back(std::to_string(report.pca_degenerate) +
+                                  " points had no defined PCA normal and took their nearest "
+                                  "neighbour's");
+
+    if (estimated || graph) {
+        CsrGraph g;
+        {
+            Phase phase(exec, report, "neighbour graph");
+            g = symmetric_union(knn_table(*index, options.k, exec), cloud.size(), exec);
+        }
+        if (estimated) {
+            Phase phase(exec, report, "normal orientation");
+            const OrientationResult o = orient_normals(g, cloud.normals);
+            report.orientation_flips = o.flips;
+            report.orientation_components = o.components;
+        }
+        if (graph) *graph = std::move(g);
+    }
+    return cloud;
+}
+
+PreparedCloud preprocess(const PointSet& input, const PreprocessOptions& options,
+                         const Execution& exec, PreprocessReport& report) {
+    CsrGraph graph;
+    PreparedCloud cloud = prepare_points(input, options, exec, report, &graph);
+    ComponentSplit split;
+    {
+        Phase phase(exec, report, "component split");
+        split =
+            split_components(graph, cloud.positions, cloud.smoothed, cloud.normals, options, exec);
+    }
+    graph = CsrGraph();
+    report.cut_length = split.cut_length / cloud.normalisation.scale;
+    report.edges_cut = split.edges_cut;
+    report.components_kept = split.count;
+    report.components_dropped = split.dropped_components;
+    report.component_sizes = split.sizes;
+
+    PreparedCloud kept;
+    kept.normalisation = cloud.normalisation;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        if (split.label[i] == ComponentSplit::kDropped) {
+            report.fate[cloud.input_index[i]] = PointFate::SmallComponent;
+            continue;
+        }
+        kept.input_index.push_back(cloud.input_index[i]);
+        kept.positions.push_back(cloud.positions[i]);
+        kept.smoothed.push_back(cloud.smoothed[i]);
+        kept.normals.push_back(cloud.normals[i]);
+    }
+    propagate_fates_to_duplicates(report);
+    if (split.dropped_components > 0)
+        report.warnings.push_back(
+            std::to_string(report.count(PointFate::SmallComponent)) + " points in " +
+            std::to_string(split.dropped_components) + " components smaller than " +
+            std::to_string(options.min_component_size) + " points were dropped");
+    if (kept.size() == 0)
+        throw InvalidInput(
+            "no point is left after pre-processing (every component is smaller than " +
+            std::to_string(options.min_component_size) + " points)");
+    return kept;
+}
+
+} // namespace hrsr

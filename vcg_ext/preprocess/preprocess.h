@@ -1,0 +1,44 @@
+// Pre-processing pipeline (ALGORITHM.md §4): validate and clean, normals, smoothing,
+// orientation, component split.
+#pragma once
+
+#include "graph/neighbour_graph.h"
+#include "options.h"
+#include "parallel.h"
+#include "point_set.h"
+#include "preprocess/report.h"
+#include "preprocess/sanitize.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace hrsr {
+
+/// A cleaned cloud with oriented unit normals, in increasing input-index order.
+struct PreparedCloud {
+    std::vector<std::uint32_t> input_index; ///< point -> index in the input point set
+    std::vector<Vec3> positions;            ///< normalised input positions (D-2)
+    std::vector<Vec3> smoothed; ///< normalised smoothed positions (= positions in Euclidean mode)
+    std::vector<Vec3> normals;  ///< unit; consistently oriented per connected piece
+    Normalisation normalisation;
+
+    std::size_t size() const { return positions.size(); }
+};
+
+/// §4.1–4.5: sanitising, normals (input or PCA), smoothing (tangent mode), orientation (when
+/// normals were estimated). If `graph` is given, it receives the symmetric kNN_k graph on the
+/// smoothed positions (built here anyway when orienting). Fills `report`; throws InvalidOption,
+/// InvalidInput (nothing usable left) or Cancelled.
+PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& options,
+                             const Execution& exec, PreprocessReport& report,
+                             CsrGraph* graph = nullptr);
+
+/// The symmetric union of the k-nearest-neighbour relation on `positions` (D-7).
+CsrGraph neighbour_graph(const std::vector<Vec3>& positions, int k, const Execution& exec);
+
+/// The whole stage: prepare_points, then the component split with the r cut (§4.6). Returns
+/// only the points of kept components; every other input point has its fate in the report.
+PreparedCloud preprocess(const PointSet& input, const PreprocessOptions& options,
+                         const Execution& exec, PreprocessReport& report);
+
+} // namespace hrsr

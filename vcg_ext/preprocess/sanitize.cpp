@@ -1,0 +1,134 @@
+#include "preprocess/sanitize.h"
+
+#include "errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+namespace hrsr {
+
+namespace {
+
+bool is_finite(const Vec3& v) {
+    return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
+
+// Returns why the input normals cannot be used, or "" when they can.
+std::string unusable_normals_reason(const PointSet& input, const std::vector<PointFate>& fate) {
+    if (input.normals.size() != input.positions.size())
+        return "the input has " + std::to_string(input.normals.size()) + " normals for " +
+               std::to_string(input.positions.size()) + " points";
+    std::size_t non_finite = 0, zero = 0;
+    for (std::size_t i = 0; i < input.normals.size(); ++i) {
+        if (fate[i] != PointFate::Kept) continue;
+        const Vec3& n = input.normals[i];
+        if (!is_finite(n))
+            ++non_finite;
+        else if (n.Norm() < constants::kMinNormalLength)
+            ++zero;
+    }
+    if (non_finite + zero == 0) return "";
+    return std::to_string(non_finite) + " non-finite and " + std::to_string(zero) +
+           " zero-length input normals";
+}
+
+// Exact duplicates (D-3): the first occurrence represents all equal points.
+void merge_duplicates(const PointSet& input, PreprocessReport& report) {
+    std::vector<std::uint32_t> order;
+    for (std::uint32_t i = 0; i < input.size(); ++i)
+        if (report.fate[i] == PointFate::Kept) order.push_back(i);
+    const auto& p = input.positions;
+    auto less = [&p](std::uint32_t a, std::uint32_t b) {
+        if (p[a][0] != p[b][0]) return p[a][0] < p[b][0];
+        if (p[a][1] != p[b][1]) return p[a][1] < p[b][1];
+        if (p[a][2] != p[b][2]) return p[a][2] < p[b][2];
+        return a < b;
+    };
+    std::sort(order.begin(), order.end(), less);
+    for (std::size_t s = 1; s < order.size(); ++s) {
+        const std::uint32_t prev = order[s - 1], cur = order[s];
+        if (p[prev] == p[cur]) {
+            report.fate[cur] = PointFate::Duplicate;
+            report.duplicate_of[cur] = report.duplicate_of[prev]; // runs are sorted by index
+        }
+    }
+}
+
+Normalisation bounding_box_normalisation(const std::vector<Vec3>& points, double& diagonal) {
+    Vec3 lo = points.front(), hi = points.front();
+    for (const Vec3& q : points)
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], q[a]);
+            hi[a] = std::max(hi[a], q[a]);
+        }
+    diagonal = (hi - lo).Norm();
+    if (!std::isfinite(diagonal))
+        throw InvalidInput("the point coordinates span more than the double-precision range");
+    Normalisation t;
+    t.centre = lo * 0.5 + hi * 0.5; // halves first: no overflow near the double range
+    t.scale = diagonal > 0 ? 1.0 / diagonal : 1.0;
+    return t;
+}
+
+} // namespace
+
+SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
+                        PreprocessReport& report) {
+    const std::size_t n = input.size();
+    report.input_points = n;
+    report.fate.assign(n, PointFate::Kept);
+    report.duplicate_of.resize(n);
+    std::iota(report.duplicate_of.begin(), report.duplicate_of.end(), 0u);
+
+    std::size_t non_finite = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!is_finite(input.positions[i])) {
+            report.fate[i] = PointFate::NonFinite;
+            ++non_finite;
+        }
+    if (non_finite > 0)
+        report.warnings.push_back(std::to_string(non_finite) +
+                                  " points with non-finite coordinates were dropped");
+    if (non_finite == n)
+        throw InvalidInput(n == 0 ? "the point cloud is empty"
+                                  : "none of the " + std::to_string(n) +
+                                        " points has finite coordinates");
+
+    bool use_normals = input.has_normals() && options.normals == NormalSource::Input;
+    if (use_normals) {
+        report.normals_fallback_reason = unusable_normals_reason(input, report.fate);
+        if (!report.normals_fallback_reason.empty()) {
+            use_normals = false;
+            report.warnings.push_back(report.normals_fallback_reason +
+                                      ": normals are estimated for the whole cloud instead");
+        }
+    }
+    report.normal_origin = use_normals ? NormalOrigin::Input : NormalOrigin::Estimated;
+
+    merge_duplicates(input, report);
+    const std::size_t duplicates = report.count(PointFate::Duplicate);
+    if (duplicates > 0)
+        report.warnings.push_back(
+            std::to_string(duplicates) +
+            " exact duplicate points were merged into their first occurrence");
+
+    SanitizedCloud cloud;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (report.fate[i] != PointFate::Kept) continue;
+        cloud.input_index.push_back(i);
+        cloud.positions.push_back(input.positions[i]);
+        if (!use_normals) continue;
+        const Vec3& normal = input.normals[i];
+        const double length = normal.Norm();
+        if (std::abs(length - 1.0) > 1e-6) ++report.normals_renormalised;
+        cloud.normals.push_back(normal / length);
+    }
+    cloud.normalisation = bounding_box_normalisation(cloud.positions, report.bbox_diagonal);
+    for (Vec3& q : cloud.positions)
+        q = (q - cloud.normalisation.centre) * cloud.normalisation.scale;
+    return cloud;
+}
+
+} // namespace hrsr

@@ -1,0 +1,35 @@
+// Validation and cleaning of a raw point set (ALGORITHM.md §4.1, §4.2; D-2, D-3).
+#pragma once
+
+#include "options.h"
+#include "point_set.h"
+#include "preprocess/report.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace hrsr {
+
+/// The map between input coordinates and the normalised ones the algorithm works in (D-2):
+/// normalised = (input − centre) · scale, with scale = 1 / bbox diagonal.
+struct Normalisation {
+    Vec3 centre{0, 0, 0};
+    double scale = 1.0;
+};
+
+/// The finite, de-duplicated points, in increasing input-index order.
+struct SanitizedCloud {
+    std::vector<std::uint32_t> input_index; ///< kept point -> index in the input
+    std::vector<Vec3> positions;            ///< normalised coordinates
+    std::vector<Vec3> normals; ///< unit input normals; empty when they must be estimated
+    Normalisation normalisation;
+};
+
+/// Drops non-finite points, checks the normals (falling back to estimation, with a warning in
+/// the report, when any is unusable), merges exact duplicates into their first occurrence, and
+/// normalises coordinates. Fills the report's per-point fates. Throws InvalidInput when no
+/// finite point is left or the coordinates span more than the double range.
+SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
+                        PreprocessReport& report);
+
+} // namespace hrsr

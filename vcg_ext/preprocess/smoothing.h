@@ -1,0 +1,26 @@
+// Moving points along their normals towards the local surface (ALGORITHM.md §4.4), so that
+// neighbourhoods and tangent-plane tests are insensitive to noise along the normal. Only the
+// algorithm sees smoothed positions; outputs always carry the input coordinates.
+#pragma once
+
+#include "knn.h"
+
+#include <vector>
+
+namespace hrsr {
+
+struct SmoothingResult {
+    std::vector<Vec3> positions;
+    double mean_shift = 0; ///< mean |displacement|, in the units of the input positions
+    double max_shift = 0;
+};
+
+/// One smoothing round: each point moves along its normal by the weighted mean height of its
+/// neighbours (192 nearest, normals within 30°, weights falling linearly with tangential
+/// distance). `index` must be built on `positions`. When `oriented` is false the normals have
+/// arbitrary signs (PCA before orientation) and the normal filter compares |n_q · n_p|.
+SmoothingResult smooth_along_normals(const std::vector<Vec3>& positions,
+                                     const std::vector<Vec3>& normals, const KnnIndex& index,
+                                     bool oriented, const Execution& exec);
+
+} // namespace hrsr
