@@ -2,6 +2,7 @@
 #include "io/ply_writer.h"
 #include "io/point_set_reader.h"
 #include "samplers.h"
+#include "temp_folder.h"
 
 #include <gtest/gtest.h>
 
@@ -31,15 +32,6 @@ std::string slurp(const fs::path& p) {
 
 class Cli : public ::testing::Test {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("hrsr_cli_" + std::to_string(::getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     // Runs hrsr with `args` (shell-quoted by the caller where needed), no stdin.
     Outcome hrsr(const std::string& args) {
         const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
@@ -51,19 +43,15 @@ protected:
         fs::remove(err);
         return r;
     }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    std::string path(const std::string& name) const { return folder_.path(name); }
     void write(const std::string& name, const std::string& content) {
-        std::ofstream(dir_ / name, std::ios::binary) << content;
+        folder_.write(name, content);
     }
     // Files in the test folder (to check that failures leave nothing behind).
-    std::vector<std::string> files() const {
-        std::vector<std::string> names;
-        for (const auto& e : fs::directory_iterator(dir_))
-            names.push_back(e.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-    fs::path dir_;
+    std::vector<std::string> files() const { return folder_.entries(); }
+
+    testing::TempFolder folder_;
+    const fs::path& dir_ = folder_.root();
 };
 
 int lines(const std::string& s) {

@@ -5,6 +5,8 @@
 #include "io/ply_writer.h"
 #include "io/point_set_reader.h"
 
+#include "temp_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,40 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh folder under the system temporary folder, removed with its content at the end.
-class TempFolder {
-public:
-    TempFolder() {
-        static int counter = 0;
-        std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-        for (char& c : test) {
-            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-        }
-        path_ = fs::temp_directory_path() / ("hrsr_io_writer_" + std::to_string(getpid()) + "_" +
-                                             test + "_" + std::to_string(counter++));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempFolder() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempFolder(const TempFolder&) = delete;
-    TempFolder& operator=(const TempFolder&) = delete;
-
-    std::string path(const std::string& file) const { return (path_ / file).string(); }
-    std::vector<std::string> entries() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(path_)) {
-            names.push_back(entry.path().filename().string());
-        }
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-private:
-    fs::path path_;
-};
+using hrsr::testing::TempFolder;
 
 std::string slurp(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

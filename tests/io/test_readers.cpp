@@ -3,6 +3,8 @@
 #include "errors.h"
 #include "io/point_set_reader.h"
 
+#include "temp_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,37 +33,7 @@ const std::string kName = "cloud.ply";
 // ---------------------------------------------------------------------------------------------
 // Helpers
 
-/// A fresh folder under the system temporary folder, removed with its content at the end.
-class TempFolder {
-public:
-    TempFolder() {
-        static int counter = 0;
-        std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-        for (char& c : test) {
-            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-        }
-        path_ = fs::temp_directory_path() / ("hrsr_io_readers_" + std::to_string(getpid()) + "_" +
-                                             test + "_" + std::to_string(counter++));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempFolder() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempFolder(const TempFolder&) = delete;
-    TempFolder& operator=(const TempFolder&) = delete;
-
-    std::string path(const std::string& file) const { return (path_ / file).string(); }
-    std::string write(const std::string& file, const std::string& bytes) const {
-        std::ofstream out(path(file), std::ios::binary);
-        out << bytes;
-        return path(file);
-    }
-
-private:
-    fs::path path_;
-};
+using hrsr::testing::TempFolder;
 
 /// Builds binary PLY payloads in either byte order.
 class Bytes {
