@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 1 unreadable or invalid input / failed output, 2 usage error.
 #include "errors.h"
 #include "normals_command.h"
+#include "reconstruct_command.h"
 #include "usage_error.h"
 
 #include <CLI/CLI.hpp>
@@ -26,6 +27,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     hrsr::app::NormalsArguments normals;
     CLI::App* normals_command = hrsr::app::add_normals_command(app, normals);
+    hrsr::app::ReconstructArguments reconstruct;
+    CLI::App* reconstruct_command = hrsr::app::add_reconstruct_command(app, reconstruct);
 
     try {
         app.parse(argc, argv);
@@ -43,6 +46,7 @@ int main(int argc, char** argv) {
 
     try {
         if (normals_command->parsed()) hrsr::app::run_normals(normals);
+        if (reconstruct_command->parsed()) hrsr::app::run_reconstruct(reconstruct);
         return 0;
     } catch (const hrsr::app::UsageError& e) {
         return fail(2, e.what());

@@ -51,6 +51,7 @@ nlohmann::json to_json(const PreprocessReport& r) {
           {"orientation_components", r.orientation_components}}},
         {"smoothing",
          {{"rounds", r.smoothing_rounds},
+          {"neighbours", r.smoothing_neighbours},
           {"mean_shift_of_diagonal", r.smoothing_mean_shift},
           {"max_shift_of_diagonal", r.smoothing_max_shift}}},
         {"components",

@@ -58,6 +58,17 @@ void KnnIndex::neighbours_of(std::uint32_t i, int k, std::vector<Neighbour>& out
     if (out.size() > std::size_t(wanted)) out.resize(std::size_t(wanted));
 }
 
+void KnnIndex::within(const Vec3& p, double radius, std::vector<std::uint32_t>& out) const {
+    out.clear();
+    if (!tree_) return;
+    thread_local std::vector<unsigned int> indices;
+    thread_local std::vector<double> squared;
+    indices.clear();
+    squared.clear();
+    tree_->kd.doQueryDist(p, float(radius), indices, squared);
+    out.assign(indices.begin(), indices.end());
+}
+
 KnnTable knn_table(const KnnIndex& index, int k, const Execution& exec) {
     KnnTable table;
     const std::size_t n = index.size();

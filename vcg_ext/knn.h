@@ -32,6 +32,8 @@ public:
     void neighbours_of(std::uint32_t i, int k, std::vector<Neighbour>& out) const;
     /// The min(k, size) nearest data points to an arbitrary position, sorted likewise.
     void nearest(const Vec3& p, int k, std::vector<Neighbour>& out) const;
+    /// Every data point within `radius` of p, in no particular order. `out` is overwritten.
+    void within(const Vec3& p, double radius, std::vector<std::uint32_t>& out) const;
 
 private:
     struct Tree;

@@ -93,12 +93,12 @@ TEST(PcaNormals, PlaneGivesItsNormal) {
     for (const Vec3& n : pca.normals) EXPECT_NEAR(std::abs(n[2]), 1.0, 1e-9);
 }
 
-TEST(PcaNormals, AutomaticNeighbourhoodFollowsD5) {
-    EXPECT_EQ(pca_neighbour_count(100, 0), 16);
-    EXPECT_EQ(pca_neighbour_count(10, 0), 9);
-    EXPECT_EQ(pca_neighbour_count(100000, 0), 50);
-    EXPECT_EQ(pca_neighbour_count(10000000, 0), 192);
-    EXPECT_EQ(pca_neighbour_count(100000, 8), 8);
+TEST(PcaNormals, AutomaticNeighbourhoodFollowsD5AndD20) {
+    EXPECT_EQ(neighbour_count(100, 0), 16);
+    EXPECT_EQ(neighbour_count(10, 0), 9);
+    EXPECT_EQ(neighbour_count(100000, 0), 50);
+    EXPECT_EQ(neighbour_count(10000000, 0), 192);
+    EXPECT_EQ(neighbour_count(100000, 8), 8);
 }
 
 TEST(PcaNormals, CollinearNeighbourhoodsCopyTheNearestValidNormal) {

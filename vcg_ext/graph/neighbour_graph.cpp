@@ -6,23 +6,28 @@
 namespace hrsr {
 
 CsrGraph symmetric_union(const KnnTable& table, std::size_t n, const Execution& exec) {
-    CsrGraph g;
-    g.offsets.assign(n + 1, 0);
-    const std::size_t k = std::size_t(table.k);
-    if (k == 0) return g;
+    CsrGraph directed;
+    directed.offsets.assign(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        directed.offsets[i + 1] = directed.offsets[i] + std::size_t(table.k);
+    directed.adjacency = table.index;
+    return symmetric_union(directed, exec);
+}
 
-    // Every relation i -> j is stored at both ends; repeats (mutual neighbours) are removed
-    // per row afterwards, so the fill order does not matter.
+CsrGraph symmetric_union(const CsrGraph& directed, const Execution& exec) {
+    const std::size_t n = directed.size();
+    // Every relation i -> j is stored at both ends; repeats (mutual neighbours) and self loops
+    // are removed per row afterwards, so the fill order does not matter.
     std::vector<std::uint64_t> fill(n + 1, 0);
     for (std::size_t i = 0; i < n; ++i) {
-        fill[i + 1] += k;
-        for (const std::uint32_t* j = table.row(i); j != table.row(i) + k; ++j) ++fill[*j + 1];
+        fill[i + 1] += directed.degree(i);
+        for (const std::uint32_t* j = directed.begin(i); j != directed.end(i); ++j) ++fill[*j + 1];
     }
     std::partial_sum(fill.begin(), fill.end(), fill.begin());
     std::vector<std::uint32_t> raw(fill[n]);
     std::vector<std::uint64_t> cursor(fill.begin(), fill.end() - 1);
     for (std::size_t i = 0; i < n; ++i) {
-        for (const std::uint32_t* j = table.row(i); j != table.row(i) + k; ++j) {
+        for (const std::uint32_t* j = directed.begin(i); j != directed.end(i); ++j) {
             raw[cursor[i]++] = *j;
             raw[cursor[*j]++] = std::uint32_t(i);
         }
@@ -32,8 +37,12 @@ CsrGraph symmetric_union(const KnnTable& table, std::size_t n, const Execution& 
         auto first = raw.begin() + std::ptrdiff_t(fill[i]);
         auto last = raw.begin() + std::ptrdiff_t(fill[i + 1]);
         std::sort(first, last);
-        unique_count[i] = std::uint64_t(std::unique(first, last) - first);
+        last = std::unique(first, last);
+        last = std::remove(first, last, std::uint32_t(i));
+        unique_count[i] = std::uint64_t(last - first);
     });
+    CsrGraph g;
+    g.offsets.assign(n + 1, 0);
     for (std::size_t i = 0; i < n; ++i) g.offsets[i + 1] = g.offsets[i] + unique_count[i];
     g.adjacency.resize(g.offsets[n]);
     parallel_for(exec, n, [&](std::size_t i) {

@@ -24,6 +24,10 @@ struct CsrGraph {
 /// i among j's (D-7). `n` is the number of points (the table may be empty for n < 2).
 CsrGraph symmetric_union(const KnnTable& table, std::size_t n, const Execution& exec);
 
+/// The same for any directed relation given as rows (row i: the targets of i, any order,
+/// self loops ignored).
+CsrGraph symmetric_union(const CsrGraph& directed, const Execution& exec);
+
 /// Union-find with path halving and union by size.
 class DisjointSets {
 public:

@@ -14,9 +14,17 @@ struct OrientationResult {
 };
 
 /// Per connected component of `graph` (root: its smallest index), grows the minimum spanning
-/// tree under the cost 1 − |n_i · n_j| (ties broken by the smaller, then the larger endpoint,
-/// D-10) and flips every vertex whose normal disagrees with its tree parent's final normal.
+/// tree under the cost below (ties broken by the smaller, then the larger endpoint, D-10) and
+/// flips every vertex whose normal disagrees with its tree parent's final normal.
 /// Deterministic; the global sign of each component is whatever its root had.
-OrientationResult orient_normals(const CsrGraph& graph, std::vector<Vec3>& normals);
+///
+/// Cost of edge {i, j}, d = p_i − p_j:  1 − |n_i · n_j| + (|d · n_i| + |d · n_j|) / ρ,
+/// ρ = (ρ_i + ρ_j) / 2 with ρ_i = `neighbourhood_radius[i]` (distance to the k-th neighbour).
+/// The second term is GEL's legacy one (§4.5 item 2), kept here as deviation D-21: without it
+/// an edge straight through a thin wall (antiparallel normals) costs nothing, so the tree
+/// crosses walls instead of going around sharp edges and flips whole regions.
+OrientationResult orient_normals(const CsrGraph& graph, const std::vector<Vec3>& positions,
+                                 const std::vector<double>& neighbourhood_radius,
+                                 std::vector<Vec3>& normals);
 
 } // namespace hrsr

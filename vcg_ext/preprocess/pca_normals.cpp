@@ -9,10 +9,10 @@
 
 namespace hrsr {
 
-int pca_neighbour_count(std::size_t n, int requested) {
+int neighbour_count(std::size_t n, int requested) {
     using namespace constants;
     const std::size_t automatic =
-        std::clamp<std::size_t>(n / kPcaPointsPerNeighbour, kPcaMinNeighbours, kPcaMaxNeighbours);
+        std::clamp<std::size_t>(n / kPointsPerNeighbour, kMinNeighbours, kMaxNeighbours);
     const std::size_t wanted = requested > 0 ? std::size_t(requested) : automatic;
     return int(std::min(wanted, n > 0 ? n - 1 : 0));
 }

@@ -13,9 +13,9 @@ struct PcaNormals {
         0; ///< points whose neighbourhood is (nearly) collinear or a single point
 };
 
-/// PCA neighbourhood for a cloud of n points: `requested` if > 0, else clamp(n / 2000, 16, 192)
-/// (D-5); never more than n − 1.
-int pca_neighbour_count(std::size_t n, int requested);
+/// Neighbourhood size for a cloud of n points: `requested` if > 0, else clamp(n / 2000, 16, 192)
+/// (D-5 for PCA, D-20 for smoothing); never more than n − 1.
+int neighbour_count(std::size_t n, int requested);
 
 /// For each point: the smallest-eigenvalue eigenvector of the covariance of the point and its
 /// `neighbours` nearest neighbours. A point whose covariance is degenerate takes the normal of

@@ -43,7 +43,7 @@ std::vector<Vec3> estimate(const std::vector<Vec3>& positions, const KnnIndex& i
         throw InvalidInput("only " + std::to_string(positions.size()) +
                            " distinct point(s): at least 3 are needed to estimate normals");
     }
-    report.pca_neighbours = pca_neighbour_count(positions.size(), options.k_normals);
+    report.pca_neighbours = neighbour_count(positions.size(), options.k_normals);
     PcaNormals pca = estimate_normals(positions, index, report.pca_neighbours, exec);
     report.pca_degenerate = pca.degenerate;
     if (pca.normals.empty()) {
@@ -57,9 +57,12 @@ std::vector<Vec3> estimate(const std::vector<Vec3>& positions, const KnnIndex& i
 }
 
 void smooth(std::vector<Vec3>& positions, const std::vector<Vec3>& normals, const KnnIndex& index,
-            bool oriented, const Execution& exec, PreprocessReport& report) {
+            bool oriented, const PreprocessOptions& options, const Execution& exec,
+            PreprocessReport& report) {
     Phase phase(exec, report, "smoothing");
-    SmoothingResult s = smooth_along_normals(positions, normals, index, oriented, exec);
+    report.smoothing_neighbours = neighbour_count(positions.size(), options.k_smoothing);
+    SmoothingResult s = smooth_along_normals(positions, normals, index, report.smoothing_neighbours,
+                                             oriented, exec);
     positions = std::move(s.positions);
     ++report.smoothing_rounds;
     report.smoothing_mean_shift = s.mean_shift; // normalised units = fraction of the diagonal
@@ -103,7 +106,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     if (estimated) cloud.normals = estimate(cloud.smoothed, *index, options, exec, report);
     if (tangent) {
         for (int round = 0; round < 2; ++round) {
-            smooth(cloud.smoothed, cloud.normals, *index, !estimated, exec, report);
+            smooth(cloud.smoothed, cloud.normals, *index, !estimated, options, exec, report);
             index = std::make_unique<KnnIndex>(cloud.smoothed);
             if (estimated) cloud.normals = estimate(cloud.smoothed, *index, options, exec, report);
         }
@@ -115,13 +118,17 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
 
     if (estimated || graph) {
         CsrGraph g;
+        std::vector<double> radius(cloud.size(), 0.0);
         {
             Phase phase(exec, report, "neighbour graph");
-            g = symmetric_union(knn_table(*index, options.k, exec), cloud.size(), exec);
+            const KnnTable table = knn_table(*index, options.k, exec);
+            for (std::size_t i = 0; i < table.size(); ++i)
+                radius[i] = (cloud.smoothed[table.row(i)[table.k - 1]] - cloud.smoothed[i]).Norm();
+            g = symmetric_union(table, cloud.size(), exec);
         }
         if (estimated) {
             Phase phase(exec, report, "normal orientation");
-            const OrientationResult o = orient_normals(g, cloud.normals);
+            const OrientationResult o = orient_normals(g, cloud.smoothed, radius, cloud.normals);
             report.orientation_flips = o.flips;
             report.orientation_components = o.components;
         }
@@ -158,7 +165,9 @@ PreparedCloud preprocess(const PointSet& input, const PreprocessOptions& options
         kept.positions.push_back(cloud.positions[i]);
         kept.smoothed.push_back(cloud.smoothed[i]);
         kept.normals.push_back(cloud.normals[i]);
+        kept.component.push_back(split.label[i]);
     }
+    kept.component_count = split.count;
     propagate_fates_to_duplicates(report);
     if (split.dropped_components > 0)
         report.warnings.push_back(

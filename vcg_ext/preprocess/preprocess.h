@@ -21,6 +21,9 @@ struct PreparedCloud {
     std::vector<Vec3> smoothed; ///< normalised smoothed positions (= positions in Euclidean mode)
     std::vector<Vec3> normals;  ///< unit; consistently oriented per connected piece
     Normalisation normalisation;
+    /// Set by preprocess(): component of each point (0 … component_count − 1, §4.6).
+    std::vector<std::uint32_t> component;
+    std::size_t component_count = 0;
 
     std::size_t size() const { return positions.size(); }
 };

@@ -43,6 +43,7 @@ struct PreprocessReport {
         0; ///< connected pieces oriented independently (one sign each)
 
     int smoothing_rounds = 0;
+    int smoothing_neighbours = 0; ///< neighbourhood used (true neighbours), 0 if no smoothing ran
     double smoothing_mean_shift =
         0; ///< mean |displacement| along the normal, fraction of the bbox diagonal
     double smoothing_max_shift = 0; ///< largest one

@@ -39,14 +39,14 @@ double displacement(const std::vector<Vec3>& positions, const std::vector<Vec3>&
 
 SmoothingResult smooth_along_normals(const std::vector<Vec3>& positions,
                                      const std::vector<Vec3>& normals, const KnnIndex& index,
-                                     bool oriented, const Execution& exec) {
+                                     int neighbours, bool oriented, const Execution& exec) {
     SmoothingResult result;
     const std::size_t n = positions.size();
     result.positions.resize(n);
     std::vector<double> shift(n, 0.0);
     parallel_for(exec, n, [&](std::size_t i) {
         thread_local std::vector<Neighbour> found;
-        index.neighbours_of(std::uint32_t(i), constants::kSmoothingNeighbours, found);
+        index.neighbours_of(std::uint32_t(i), neighbours, found);
         shift[i] = displacement(positions, normals, i, found, oriented);
         result.positions[i] = positions[i] + normals[i] * shift[i];
     });

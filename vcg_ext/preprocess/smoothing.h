@@ -16,11 +16,11 @@ struct SmoothingResult {
 };
 
 /// One smoothing round: each point moves along its normal by the weighted mean height of its
-/// neighbours (192 nearest, normals within 30°, weights falling linearly with tangential
-/// distance). `index` must be built on `positions`. When `oriented` is false the normals have
-/// arbitrary signs (PCA before orientation) and the normal filter compares |n_q · n_p|.
+/// `neighbours` nearest points whose normals are within 30°, weights falling linearly with the
+/// tangential distance. `index` must be built on `positions`. When `oriented` is false the
+/// normals have arbitrary signs (PCA before orientation) and the filter compares |n_q · n_p|.
 SmoothingResult smooth_along_normals(const std::vector<Vec3>& positions,
                                      const std::vector<Vec3>& normals, const KnnIndex& index,
-                                     bool oriented, const Execution& exec);
+                                     int neighbours, bool oriented, const Execution& exec);
 
 } // namespace hrsr

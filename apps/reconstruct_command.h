@@ -1,0 +1,26 @@
+// `hrsr reconstruct`: point cloud in, triangle mesh out.
+#pragma once
+
+#include "options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace hrsr::app {
+
+struct ReconstructArguments {
+    std::string input;
+    std::string output;
+    std::string report; ///< JSON report path; empty = none
+    std::string method = "rsr";
+    RsrOptions options;
+    int threads = 0;
+    bool quiet = false;
+};
+
+CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& args);
+
+void run_reconstruct(const ReconstructArguments& args);
+
+} // namespace hrsr::app

@@ -1,0 +1,41 @@
+#include "geometry.h"
+
+#include <algorithm>
+
+namespace hrsr {
+
+namespace {
+
+// Side of point p relative to the directed line a→b, in the plane with basis (t1, t2).
+double side(const TangentFrame& f, const Vec3& a, const Vec3& b, const Vec3& p) {
+    const double bx = (b - a).dot(f.t1), by = (b - a).dot(f.t2);
+    const double px = (p - a).dot(f.t1), py = (p - a).dot(f.t2);
+    return bx * py - by * px;
+}
+
+bool cross_in_plane(const Vec3& plane_normal, const Vec3& a, const Vec3& b, const Vec3& c,
+                    const Vec3& d) {
+    const double length = plane_normal.Norm();
+    const TangentFrame f = tangent_frame(length > 0 ? plane_normal / length : plane_normal);
+    return side(f, a, b, c) * side(f, a, b, d) <= 0 && side(f, c, d, a) * side(f, c, d, b) <= 0;
+}
+
+} // namespace
+
+bool segments_cross(const Vec3& a, const Vec3& b, const Vec3& na, const Vec3& nb, const Vec3& c,
+                    const Vec3& d, const Vec3& nc, const Vec3& nd) {
+    return cross_in_plane((na + nb) * 0.5, a, b, c, d) ||
+           cross_in_plane((nc + nd) * 0.5, a, b, c, d);
+}
+
+double largest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+    auto angle = [](const Vec3& apex, const Vec3& p, const Vec3& q) {
+        const Vec3 u = p - apex, v = q - apex;
+        const double nu = u.Norm(), nv = v.Norm();
+        if (nu == 0 || nv == 0) return M_PI;
+        return std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0));
+    };
+    return std::max({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+}
+
+} // namespace hrsr

@@ -1,0 +1,68 @@
+#include "mesh/fans.h"
+
+#include "graph/neighbour_graph.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace hrsr {
+
+Fans compute_fans(std::size_t n, const std::vector<Triangle>& triangles) {
+    // Corners grouped by vertex (CSR), in increasing triangle order.
+    std::vector<std::uint32_t> offset(n + 1, 0);
+    for (const Triangle& t : triangles)
+        for (std::uint32_t v : t) ++offset[v + 1];
+    std::partial_sum(offset.begin(), offset.end(), offset.begin());
+    std::vector<std::uint32_t> corners(offset[n]), cursor(offset.begin(), offset.end() - 1);
+    for (std::uint32_t t = 0; t < triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) corners[cursor[triangles[t][k]]++] = 3 * t + std::uint32_t(k);
+
+    Fans fans;
+    fans.corner_fan.assign(3 * triangles.size(), 0);
+    fans.fan_count.assign(n, 0);
+    for (std::size_t v = 0; v < n; ++v) {
+        const std::uint32_t first = offset[v], count = offset[v + 1] - first;
+        if (count == 0) continue;
+        // Two corners at v are in one fan when their triangles share an edge at v, i.e. the
+        // other endpoint of one of their edges at v is the same vertex.
+        DisjointSets sets(count);
+        std::vector<std::pair<std::uint32_t, std::uint32_t>>
+            spokes; // (other endpoint, local corner)
+        for (std::uint32_t c = 0; c < count; ++c) {
+            const std::uint32_t corner = corners[first + c], t = corner / 3, k = corner % 3;
+            spokes.emplace_back(triangles[t][(k + 1) % 3], c);
+            spokes.emplace_back(triangles[t][(k + 2) % 3], c);
+        }
+        std::sort(spokes.begin(), spokes.end());
+        for (std::size_t s = 1; s < spokes.size(); ++s)
+            if (spokes[s].first == spokes[s - 1].first)
+                sets.unite(spokes[s].second, spokes[s - 1].second);
+        std::vector<std::uint32_t> fan_of_root(count, ~0u);
+        for (std::uint32_t c = 0; c < count; ++c) { // corners are in triangle order
+            std::uint32_t& fan = fan_of_root[sets.find(c)];
+            if (fan == ~0u) fan = fans.fan_count[v]++;
+            fans.corner_fan[corners[first + c]] = fan;
+        }
+    }
+    return fans;
+}
+
+std::vector<std::uint32_t> split_non_manifold_vertices(std::size_t n,
+                                                       std::vector<Triangle>& triangles) {
+    const Fans fans = compute_fans(n, triangles);
+    std::vector<std::uint32_t> source(n);
+    std::iota(source.begin(), source.end(), 0u);
+    std::vector<std::uint32_t> first_copy(n, 0);
+    for (std::uint32_t v = 0; v < n; ++v) {
+        first_copy[v] = std::uint32_t(source.size());
+        for (std::uint32_t f = 1; f < fans.fan_count[v]; ++f) source.push_back(v);
+    }
+    for (std::uint32_t t = 0; t < triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t fan = fans.corner_fan[3 * t + std::uint32_t(k)];
+            if (fan > 0) triangles[t][k] = first_copy[triangles[t][k]] + fan - 1;
+        }
+    return source;
+}
+
+} // namespace hrsr

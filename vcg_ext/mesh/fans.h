@@ -1,0 +1,27 @@
+// Fans: the triangles around a vertex that are connected through edges at that vertex. A vertex
+// with more than one fan is non-manifold (two surface sheets touching at a point).
+#pragma once
+
+#include "mesh/triangle_mesh.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace hrsr {
+
+struct Fans {
+    std::vector<std::uint32_t>
+        corner_fan; ///< per triangle corner (3t + k): fan number at that vertex, 0-based
+    std::vector<std::uint32_t> fan_count; ///< per vertex
+};
+
+/// Fans are numbered per vertex in the order of their smallest triangle index (deterministic).
+Fans compute_fans(std::size_t vertex_count, const std::vector<Triangle>& triangles);
+
+/// Gives every extra fan of a non-manifold vertex its own copy of the vertex (§5.8): copies are
+/// appended after the existing vertices, in (vertex, fan) order, and `triangles` is rewritten.
+/// Returns, for every vertex of the result, the vertex it copies (itself for the originals).
+std::vector<std::uint32_t> split_non_manifold_vertices(std::size_t vertex_count,
+                                                       std::vector<Triangle>& triangles);
+
+} // namespace hrsr

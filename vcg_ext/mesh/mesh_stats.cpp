@@ -1,0 +1,119 @@
+#include "mesh/mesh_stats.h"
+
+#include "graph/neighbour_graph.h"
+#include "mesh/fans.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace hrsr {
+
+namespace {
+
+struct HalfEdge {
+    std::uint32_t lo, hi; ///< undirected key
+    std::uint32_t triangle;
+    bool forward; ///< traversed lo → hi
+    bool operator<(const HalfEdge& o) const {
+        return std::tie(lo, hi, triangle) < std::tie(o.lo, o.hi, o.triangle);
+    }
+};
+
+std::vector<HalfEdge> sorted_half_edges(const std::vector<Triangle>& triangles) {
+    std::vector<HalfEdge> h;
+    h.reserve(3 * triangles.size());
+    for (std::uint32_t t = 0; t < triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+            if (a == b) continue;
+            h.push_back({std::min(a, b), std::max(a, b), t, a < b});
+        }
+    std::sort(h.begin(), h.end());
+    return h;
+}
+
+} // namespace
+
+std::vector<std::uint32_t> triangle_components(std::size_t, const std::vector<Triangle>& triangles,
+                                               std::size_t& count) {
+    const std::vector<HalfEdge> h = sorted_half_edges(triangles);
+    DisjointSets sets(triangles.size());
+    for (std::size_t a = 0; a + 1 < h.size(); ++a)
+        if (h[a].lo == h[a + 1].lo && h[a].hi == h[a + 1].hi)
+            sets.unite(h[a].triangle, h[a + 1].triangle);
+    std::vector<std::uint32_t> label(triangles.size()), root_label(triangles.size(), ~0u);
+    count = 0;
+    for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+        const std::uint32_t r = sets.find(t);
+        if (root_label[r] == ~0u) root_label[r] = std::uint32_t(count++);
+        label[t] = root_label[r];
+    }
+    return label;
+}
+
+MeshStats measure_mesh(std::size_t n, const std::vector<Triangle>& triangles) {
+    MeshStats s;
+    s.faces = triangles.size();
+    std::vector<std::uint8_t> used(n, 0);
+    for (const Triangle& t : triangles) {
+        for (std::uint32_t v : t) used[v] = 1;
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) ++s.degenerate_faces;
+    }
+    s.vertices = std::size_t(std::count(used.begin(), used.end(), 1));
+    s.unreferenced_vertices = n - s.vertices;
+
+    const std::vector<HalfEdge> h = sorted_half_edges(triangles);
+    std::size_t component_count = 0;
+    const std::vector<std::uint32_t> component = triangle_components(n, triangles, component_count);
+    s.components.resize(component_count);
+    // Boundary loops: union-find over the endpoints of boundary edges.
+    DisjointSets boundary(n);
+    std::vector<std::uint8_t> on_boundary(n, 0);
+    for (std::size_t a = 0; a < h.size();) {
+        std::size_t b = a;
+        while (b < h.size() && h[b].lo == h[a].lo && h[b].hi == h[a].hi) ++b;
+        const std::size_t count = b - a;
+        ++s.edges;
+        ++s.components[component[h[a].triangle]].edges;
+        if (count == 1) {
+            ++s.boundary_edges;
+            boundary.unite(h[a].lo, h[a].hi);
+            on_boundary[h[a].lo] = on_boundary[h[a].hi] = 1;
+        } else if (count > 2) {
+            ++s.non_manifold_edges;
+        } else if (h[a].forward == h[a + 1].forward) {
+            ++s.inconsistently_oriented_edges;
+        }
+        a = b;
+    }
+    // Vertices and loops per component (a vertex belongs to the component of its triangles).
+    std::vector<std::uint32_t> vertex_component(n, ~0u);
+    for (std::uint32_t t = 0; t < triangles.size(); ++t)
+        for (std::uint32_t v : triangles[t]) vertex_component[v] = component[t];
+    for (std::size_t v = 0; v < n; ++v) {
+        if (vertex_component[v] == ~0u) continue;
+        ++s.components[vertex_component[v]].vertices;
+        if (on_boundary[v] && boundary.find(std::uint32_t(v)) == v) {
+            ++s.boundary_loops;
+            ++s.components[vertex_component[v]].boundary_loops;
+        }
+    }
+    for (std::uint32_t t = 0; t < triangles.size(); ++t) ++s.components[component[t]].faces;
+    const Fans fans = compute_fans(n, triangles);
+    s.non_manifold_vertices = std::size_t(std::count_if(
+        fans.fan_count.begin(), fans.fan_count.end(), [](std::uint32_t c) { return c > 1; }));
+    return s;
+}
+
+double signed_volume(const std::vector<Vec3>& p, const std::vector<Triangle>& triangles,
+                     const std::vector<std::uint32_t>& component, std::uint32_t which) {
+    double volume = 0;
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+        if (component[t] != which) continue;
+        const Vec3 &a = p[triangles[t][0]], &b = p[triangles[t][1]], &c = p[triangles[t][2]];
+        volume += a.dot(b ^ c);
+    }
+    return volume / 6.0;
+}
+
+} // namespace hrsr

@@ -1,0 +1,49 @@
+// Topological measures of a triangle mesh: what the report and the tests assert on.
+#pragma once
+
+#include "mesh/triangle_mesh.h"
+#include "point_set.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace hrsr {
+
+struct ComponentTopology {
+    std::size_t vertices = 0, edges = 0, faces = 0, boundary_loops = 0;
+    long euler() const { return long(vertices) - long(edges) + long(faces); }
+    bool closed() const { return boundary_loops == 0; }
+    /// Genus of an orientable surface: (2 − χ − b) / 2.
+    long genus() const { return (2 - euler() - long(boundary_loops)) / 2; }
+};
+
+struct MeshStats {
+    std::size_t vertices = 0; ///< referenced by at least one triangle
+    std::size_t unreferenced_vertices = 0;
+    std::size_t faces = 0;
+    std::size_t edges = 0;
+    std::size_t boundary_edges = 0; ///< in exactly one triangle
+    std::size_t boundary_loops = 0;
+    std::size_t non_manifold_edges = 0;            ///< in three or more triangles
+    std::size_t non_manifold_vertices = 0;         ///< whose triangles form more than one fan
+    std::size_t inconsistently_oriented_edges = 0; ///< two triangles traversing it the same way
+    std::size_t degenerate_faces = 0;              ///< repeating a vertex
+    std::vector<ComponentTopology> components;     ///< edge-connected, ordered by smallest vertex
+    long euler() const { return long(vertices) - long(edges) + long(faces); }
+};
+
+/// Measures `triangles` over `vertex_count` vertices.
+MeshStats measure_mesh(std::size_t vertex_count, const std::vector<Triangle>& triangles);
+
+/// Face-connected components (through shared edges): per triangle its component id, ids in
+/// order of first triangle.
+std::vector<std::uint32_t> triangle_components(std::size_t vertex_count,
+                                               const std::vector<Triangle>& triangles,
+                                               std::size_t& count);
+
+/// Signed volume enclosed by the triangles of one component (positive when they wind
+/// counter-clockwise seen from outside).
+double signed_volume(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
+                     const std::vector<std::uint32_t>& component, std::uint32_t which);
+
+} // namespace hrsr

@@ -1,0 +1,51 @@
+// The library's entry point: point set in, triangle mesh and report out.
+#pragma once
+
+#include "mesh/mesh_stats.h"
+#include "options.h"
+#include "parallel.h"
+#include "point_set.h"
+#include "preprocess/report.h"
+#include "rsr/observer.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hrsr {
+
+/// A reconstructed mesh over input points.
+struct Reconstruction {
+    std::vector<std::uint32_t> vertex_input_index; ///< output vertex -> input point; copies made
+                                                   ///< for non-manifold vertices share it (§5.8)
+    std::vector<Vec3> vertex_normals;              ///< unit; outward on closed components (D-6)
+    std::vector<Triangle> triangles;               ///< counter-clockwise seen from the normals
+};
+
+struct ReconstructionReport {
+    PreprocessReport preprocess;
+    std::size_t points_used = 0; ///< points handed to RsR (after pre-processing)
+    std::vector<std::uint32_t>
+        not_in_triangle; ///< input indices of used points left out of every triangle
+    std::size_t referenced_input_points =
+        0;                              ///< output vertices' points + duplicates merged into them
+    double vertex_reference_ratio = 0;  ///< r_v = referenced_input_points / input points
+    std::size_t vertex_copies = 0;      ///< extra vertices made to split non-manifold vertices
+    std::size_t flipped_components = 0; ///< closed components turned outwards (D-6)
+
+    std::size_t candidates = 0, tree_edges = 0, face_split_edges = 0, handle_edges = 0,
+                ear_edges = 0;
+    std::size_t handles = 0; ///< handles inserted (merges of two faces), all components
+    MeshStats mesh;
+    std::vector<std::pair<std::string, double>>
+        timings; ///< (phase, seconds), summed over components
+};
+
+/// Rotation System Reconstruction of the whole cloud (§2.1): pre-processing, then RsR per
+/// component, then assembly. Throws InvalidOption, InvalidInput or Cancelled. The observer, if
+/// given, watches every component (which are then reconstructed one after the other).
+Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
+                               const Execution& exec, ReconstructionReport& report,
+                               rsr::Observer* observer = nullptr);
+
+} // namespace hrsr

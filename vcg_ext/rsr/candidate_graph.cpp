@@ -1,0 +1,82 @@
+#include "rsr/candidate_graph.h"
+
+#include "geometry.h"
+#include "preprocess/components.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hrsr::rsr {
+
+CandidateGraph build_candidate_graph(const ComponentCloud& cloud, const KnnIndex& index,
+                                     const PreprocessOptions& options, const Execution& exec) {
+    const std::size_t n = cloud.smoothed.size();
+    const int k = int(std::min<std::size_t>(std::size_t(options.k), n > 0 ? n - 1 : 0));
+    // GEL's rank ⌊2k/3⌋ counted from the point itself = the ⌊2k/3⌋-th true neighbour (clamped,
+    // D-8).
+    const int rank = std::clamp(
+        k * constants::kPreMaxRankNumerator / constants::kPreMaxRankDenominator, 1, std::max(k, 1));
+    const double min_cos = normal_filter_cosine(options);
+
+    CandidateGraph g;
+    g.pre_max_length.assign(n, 0.0);
+    std::vector<std::vector<std::uint32_t>> kept(n);
+    parallel_for(exec, n, [&](std::size_t i) {
+        thread_local std::vector<Neighbour> found;
+        index.neighbours_of(std::uint32_t(i), k, found);
+        if (!found.empty())
+            g.pre_max_length[i] = std::sqrt(
+                found[std::size_t(std::min<int>(rank, int(found.size()))) - 1].squared_distance);
+        for (const Neighbour& nb : found)
+            if (cloud.normals[i].dot(cloud.normals[nb.index]) >= min_cos)
+                kept[i].push_back(nb.index);
+    });
+    CsrGraph directed;
+    directed.offsets.assign(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        directed.offsets[i + 1] = directed.offsets[i] + kept[i].size();
+    directed.adjacency.reserve(directed.offsets[n]);
+    for (auto& row : kept) {
+        directed.adjacency.insert(directed.adjacency.end(), row.begin(), row.end());
+        std::vector<std::uint32_t>().swap(row);
+    }
+    g.graph = symmetric_union(directed, exec);
+
+    g.max_length.assign(n, 0.0);
+    parallel_for(exec, n, [&](std::size_t i) {
+        for (const std::uint32_t* j = g.graph.begin(i); j != g.graph.end(i); ++j)
+            g.max_length[i] =
+                std::max(g.max_length[i],
+                         edge_length(options.distance, cloud.smoothed[i], cloud.smoothed[*j],
+                                     cloud.normals[i], cloud.normals[*j]));
+    });
+    return g;
+}
+
+std::vector<CandidateEdge> face_split_candidates(const CandidateGraph& g,
+                                                 const ComponentCloud& cloud, DistanceMode mode,
+                                                 const Execution& exec) {
+    const std::size_t n = g.graph.size();
+    std::vector<std::vector<CandidateEdge>> per_vertex(n);
+    parallel_for(exec, n, [&](std::size_t i) {
+        for (const std::uint32_t* j = g.graph.begin(i); j != g.graph.end(i); ++j) {
+            if (*j <= i) continue;
+            const double len = edge_length(mode, cloud.smoothed[i], cloud.smoothed[*j],
+                                           cloud.normals[i], cloud.normals[*j]);
+            if (len <= g.pre_max_length[i] && len <= g.pre_max_length[*j])
+                per_vertex[i].push_back({len, std::uint32_t(i), *j});
+        }
+    });
+    std::vector<CandidateEdge> all;
+    for (auto& row : per_vertex) {
+        all.insert(all.end(), row.begin(), row.end());
+        std::vector<CandidateEdge>().swap(row);
+    }
+    std::sort(all.begin(), all.end(), [](const CandidateEdge& a, const CandidateEdge& b) {
+        if (a.length != b.length) return a.length < b.length;
+        return a.i != b.i ? a.i < b.i : a.j < b.j;
+    });
+    return all;
+}
+
+} // namespace hrsr::rsr

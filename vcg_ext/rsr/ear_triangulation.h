@@ -1,0 +1,27 @@
+// Final ear triangulation of RsR (ALGORITHM.md §5.7, D-10, D-12): close the remaining polygonal
+// faces by cutting ears, shortest first, as long as the new edge is not too long.
+#pragma once
+
+#include "options.h"
+#include "rsr/candidate_graph.h"
+#include "rsr/faces.h"
+#include "rsr/observer.h"
+
+#include <vector>
+
+namespace hrsr::rsr {
+
+struct EarStats {
+    std::size_t ears = 0;              ///< edges inserted
+    std::size_t closing_triangles = 0; ///< extra triangles closed on the far side of an ear edge
+};
+
+/// `lengths_cloud` gives the positions/normals for ear scores (those of the candidate graph);
+/// `max_length` bounds them. Handle roots are explored first.
+EarStats triangulate_ears(RotationSystem& rotation, Faces& faces,
+                          const ComponentCloud& lengths_cloud,
+                          const std::vector<double>& max_length, DistanceMode mode,
+                          const std::vector<std::uint32_t>& roots,
+                          std::vector<LocalTriangle>& triangles, Observer* observer);
+
+} // namespace hrsr::rsr

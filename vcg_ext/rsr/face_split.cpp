@@ -1,0 +1,106 @@
+#include "rsr/face_split.h"
+
+#include "geometry.h"
+#include "options.h"
+
+#include <algorithm>
+
+namespace hrsr::rsr {
+
+void count_triangle_edge(RotationSystem& rs, std::uint32_t u, std::uint32_t w) {
+    ++rs.dart(u, rs.find(u, w)).triangles;
+    ++rs.dart(w, rs.find(w, u)).triangles;
+}
+
+std::uint8_t triangles_on_edge(const RotationSystem& rs, std::uint32_t u, std::uint32_t w) {
+    return rs.dart(u, rs.find(u, w)).triangles;
+}
+
+namespace {
+
+bool has_common_neighbour(const RotationSystem& rs, std::uint32_t v1, std::uint32_t v2) {
+    for (const Dart& d : rs.darts(v1))
+        if (rs.adjacent(v2, d.to)) return true;
+    return false;
+}
+
+// The neighbour after `from` (counter-clockwise) in the rotation of v.
+std::uint32_t successor(const RotationSystem& rs, std::uint32_t v, std::uint32_t from) {
+    return rs.dart(v, rs.next(v, rs.find(v, from))).to;
+}
+
+// A triangle (v1, apex, v2) or (v1, v2, apex) closed by the new edge is valid when it is not a
+// sliver, its two old edges have room for another triangle, and it is a face of the rotation.
+bool triangle_is_valid(const RotationSystem& rs, std::uint32_t a, std::uint32_t b,
+                       std::uint32_t apex) {
+    const double max_angle = constants::kMaxTriangleAngleDegrees * M_PI / 180.0;
+    if (largest_angle(rs.position(a), rs.position(b), rs.position(apex)) > max_angle) return false;
+    if (triangles_on_edge(rs, a, apex) >= 2 || triangles_on_edge(rs, b, apex) >= 2) return false;
+    return true;
+}
+
+// §5.5.2 step 4, with the rotation as it is *before* inserting {v1, v2}. Returns false to reject.
+bool register_triangles(const RotationSystem& rs, std::uint32_t v1, std::uint32_t v2,
+                        std::vector<LocalTriangle>& found) {
+    found.clear();
+    if (!has_common_neighbour(rs, v1, v2)) return true;
+    // r1 is just clockwise of v2 at v1; r2 just clockwise of v1 at v2.
+    const std::uint32_t r1 = rs.dart(v1, rs.wedge(v1, v2)).to;
+    const std::uint32_t r2 = rs.dart(v2, rs.wedge(v2, v1)).to;
+    if (rs.adjacent(v2, r1) && ccw_angle(rs.angle(r1, v2), rs.angle(r1, v1)) < M_PI) {
+        // Triangle (v1, r1, v2): a face iff r1 follows v1 at v2 and v1 follows v2 at r1.
+        if (!triangle_is_valid(rs, v1, v2, r1) || rs.successor_as_if_inserted(v2, v1) != r1 ||
+            successor(rs, r1, v2) != v1)
+            return false;
+        found.push_back({v1, r1, v2});
+    }
+    if (rs.adjacent(v1, r2) && ccw_angle(rs.angle(r2, v1), rs.angle(r2, v2)) < M_PI) {
+        if (!triangle_is_valid(rs, v1, v2, r2) || rs.successor_as_if_inserted(v1, v2) != r2 ||
+            successor(rs, r2, v1) != v2)
+            return false;
+        found.push_back({v1, v2, r2});
+    }
+    return !found.empty(); // common neighbours but no triangle: the edge would cut across
+}
+
+} // namespace
+
+FaceSplitStats split_faces(RotationSystem& rs, Faces& faces, GeometryCheck& geometry,
+                           const std::vector<CandidateEdge>& candidates,
+                           std::vector<LocalTriangle>& triangles, Observer* observer,
+                           Progress* progress) {
+    FaceSplitStats stats;
+    std::vector<LocalTriangle> closed;
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+        if (progress && (c & 0xffff) == 0) progress->update(double(c) / double(candidates.size()));
+        const std::uint32_t v1 = candidates[c].i, v2 = candidates[c].j;
+        if (rs.adjacent(v1, v2)) continue; // MST edges, and edges already inserted
+        if (faces.face_of_wedge(v1, v2) != faces.face_of_wedge(v2, v1)) {
+            ++stats.rejected_topology;
+            continue;
+        }
+        if (!geometry.passes(v1, v2)) {
+            ++stats.rejected_geometry;
+            continue;
+        }
+        if (!register_triangles(rs, v1, v2, closed)) {
+            ++stats.rejected_triangles;
+            continue;
+        }
+        const auto [d1, d2] = rs.insert_edge(v1, v2);
+        faces.split(d1, d2);
+        for (const LocalTriangle& t : closed) {
+            count_triangle_edge(rs, t[0], t[1]);
+            count_triangle_edge(rs, t[1], t[2]);
+            count_triangle_edge(rs, t[2], t[0]);
+            faces.mark_recorded_triangle(t[0], t[1]);
+            triangles.push_back(t);
+        }
+        ++stats.inserted;
+        if (observer)
+            observer->edge_inserted(Phase::FaceSplit, v1, v2, rs, faces, triangles, closed.size());
+    }
+    return stats;
+}
+
+} // namespace hrsr::rsr

@@ -1,0 +1,33 @@
+// Face-split phase of RsR (ALGORITHM.md §5.5): candidate edges in ascending length are inserted
+// when they split a face, pass the geometry check, and close valid triangles.
+#pragma once
+
+#include "rsr/candidate_graph.h"
+#include "rsr/faces.h"
+#include "rsr/geometry_check.h"
+#include "rsr/observer.h"
+
+#include <vector>
+
+namespace hrsr::rsr {
+
+struct FaceSplitStats {
+    std::size_t inserted = 0;
+    std::size_t rejected_topology = 0;  ///< endpoints' wedges in different faces
+    std::size_t rejected_geometry = 0;  ///< crossing a nearby edge
+    std::size_t rejected_triangles = 0; ///< would close an invalid triangle
+};
+
+/// Runs the phase; appends the triangles it closes (counter-clockwise seen from the normals).
+FaceSplitStats split_faces(RotationSystem& rotation, Faces& faces, GeometryCheck& geometry,
+                           const std::vector<CandidateEdge>& candidates,
+                           std::vector<LocalTriangle>& triangles, Observer* observer,
+                           Progress* progress);
+
+/// Adds one to the triangle counter of edge {u, w} (both darts).
+void count_triangle_edge(RotationSystem& rotation, std::uint32_t u, std::uint32_t w);
+
+/// Triangle count of edge {u, w} (which must exist).
+std::uint8_t triangles_on_edge(const RotationSystem& rotation, std::uint32_t u, std::uint32_t w);
+
+} // namespace hrsr::rsr

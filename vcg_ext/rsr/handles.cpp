@@ -1,0 +1,124 @@
+#include "rsr/handles.h"
+
+#include "geometry.h"
+
+#include <algorithm>
+#include <map>
+
+namespace hrsr::rsr {
+
+namespace {
+
+struct HandleCandidate {
+    std::uint32_t v, w;
+};
+
+// A reflex corner: two consecutive neighbours more than π apart around v.
+bool is_open(const RotationSystem& rs, std::uint32_t v) {
+    const std::uint32_t d = rs.degree(v);
+    if (d < 2) return false;
+    for (std::uint32_t i = 0; i < d; ++i)
+        if (ccw_angle(rs.dart(v, i).angle, rs.dart(v, rs.next(v, i)).angle) > M_PI) return true;
+    return false;
+}
+
+using FacePair = std::pair<std::uint32_t, std::uint32_t>;
+
+std::map<FacePair, std::vector<HandleCandidate>>
+collect_candidates(const RotationSystem& rs, const Faces& faces, GeometryCheck& geometry,
+                   const KnnIndex& index, int k, HandleStats& stats) {
+    std::map<FacePair, std::vector<HandleCandidate>> groups;
+    std::vector<Neighbour> found;
+    for (std::uint32_t v = 0; v < rs.vertex_count(); ++v) {
+        if (!is_open(rs, v)) continue;
+        ++stats.open_vertices;
+        index.neighbours_of(v, k, found);
+        for (const Neighbour& nb : found) {
+            const std::uint32_t w = nb.index;
+            if (rs.degree(w) == 0 || rs.adjacent(v, w)) continue;
+            const std::uint32_t fa = faces.face_of_wedge(v, w), fb = faces.face_of_wedge(w, v);
+            // A handle joins two holes; entering a recorded triangle would unmake it.
+            if (fa == fb || faces.is_recorded_triangle(fa) || faces.is_recorded_triangle(fb) ||
+                !geometry.passes(v, w))
+                continue;
+            groups[{std::min(fa, fb), std::max(fa, fb)}].push_back({v, w});
+            ++stats.candidates;
+            break; // at most one candidate per open vertex
+        }
+    }
+    return groups;
+}
+
+} // namespace
+
+std::size_t BoundedBfs::distance(const RotationSystem& rs, std::uint32_t a, std::uint32_t b,
+                                 std::size_t limit) {
+    if (a == b) return 0;
+    if (++epoch_ == 0) {
+        std::fill(stamp_.begin(), stamp_.end(), 0);
+        epoch_ = 1;
+    }
+    frontier_.assign(1, a);
+    stamp_[a] = epoch_;
+    for (std::size_t depth = 1; depth <= limit && !frontier_.empty(); ++depth) {
+        next_.clear();
+        for (std::uint32_t x : frontier_)
+            for (const Dart& d : rs.darts(x)) {
+                if (d.to == b) return depth;
+                if (stamp_[d.to] == epoch_) continue;
+                stamp_[d.to] = epoch_;
+                next_.push_back(d.to);
+            }
+        std::swap(frontier_, next_);
+    }
+    return limit + 1;
+}
+
+HandleStats insert_handles(RotationSystem& rs, Faces& faces, GeometryCheck& geometry,
+                           const KnnIndex& index, const RsrOptions& options,
+                           const std::vector<LocalTriangle>& triangles,
+                           std::vector<std::uint32_t>& roots, Observer* observer) {
+    HandleStats stats;
+    BoundedBfs bfs(rs.vertex_count());
+    const auto by_pair =
+        collect_candidates(rs, faces, geometry, index, options.preprocess.k, stats);
+    // Largest groups first; ties by the face pair (D-10).
+    std::vector<std::pair<FacePair, const std::vector<HandleCandidate>*>> groups;
+    for (const auto& [pair, list] : by_pair) groups.emplace_back(pair, &list);
+    std::stable_sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) {
+        return a.second->size() > b.second->size();
+    });
+
+    for (const auto& [pair, list] : groups) {
+        if (list->size() <= constants::kMinHandleGroupSize) break;
+        if (options.handles >= 0 && stats.handles >= std::size_t(options.handles)) break;
+        ++stats.groups;
+        bool merged = false;
+        for (const HandleCandidate& c : *list) {
+            if (rs.adjacent(c.v, c.w)) continue;
+            const std::size_t limit = std::size_t(options.max_handle_hops);
+            // Face labels are current (D-11): the first edge of a group merges its two faces,
+            // later ones split the merged face. Recorded triangles are never entered.
+            const std::uint32_t fa = faces.face_of_wedge(c.v, c.w),
+                                fb = faces.face_of_wedge(c.w, c.v);
+            if (faces.is_recorded_triangle(fa) || faces.is_recorded_triangle(fb)) continue;
+            if (bfs.distance(rs, c.v, c.w, limit) <= limit || !geometry.passes(c.v, c.w)) continue;
+            const bool joins = fa != fb;
+            const auto [d1, d2] = rs.insert_edge(c.v, c.w);
+            if (joins)
+                faces.merge(d1, d2);
+            else
+                faces.split(d1, d2);
+            merged = merged || joins;
+            ++stats.edges_inserted;
+            roots.push_back(c.v);
+            roots.push_back(c.w);
+            if (observer)
+                observer->edge_inserted(Phase::Handles, c.v, c.w, rs, faces, triangles, 0);
+        }
+        if (merged) ++stats.handles;
+    }
+    return stats;
+}
+
+} // namespace hrsr::rsr

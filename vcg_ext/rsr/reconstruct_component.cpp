@@ -1,0 +1,84 @@
+#include "rsr/reconstruct_component.h"
+
+#include "rsr/candidate_graph.h"
+#include "rsr/spanning_tree.h"
+
+#include <chrono>
+
+namespace hrsr::rsr {
+
+namespace {
+
+class Stopwatch {
+public:
+    explicit Stopwatch(ComponentStats& stats) : stats_(stats) {}
+    void lap(const char* phase) {
+        const auto now = std::chrono::steady_clock::now();
+        stats_.timings.emplace_back(phase, std::chrono::duration<double>(now - start_).count());
+        start_ = now;
+    }
+
+private:
+    ComponentStats& stats_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+void begin(const Execution& exec, const char* phase) {
+    if (exec.progress) exec.progress->begin(phase);
+}
+
+} // namespace
+
+std::vector<LocalTriangle> reconstruct_component(const ComponentCloud& cloud,
+                                                 const RsrOptions& options, const Execution& exec,
+                                                 ComponentStats& stats, Observer* observer) {
+    std::vector<LocalTriangle> triangles;
+    if (cloud.smoothed.size() < 3) return triangles;
+    const PreprocessOptions& pre = options.preprocess;
+    Stopwatch clock(stats);
+
+    begin(exec, "candidate graph");
+    const KnnIndex index(cloud.smoothed);
+    const CandidateGraph graph = build_candidate_graph(cloud, index, pre, exec);
+    const std::vector<CandidateEdge> candidates =
+        face_split_candidates(graph, cloud, pre.distance, exec);
+    stats.candidates = candidates.size();
+    clock.lap("candidate graph");
+
+    begin(exec, "spanning tree");
+    const SpanningForest tree = candidate_spanning_tree(graph, cloud);
+    stats.graph_pieces = tree.trees;
+    // Rotation angles and geometry checks see the leaf-fixed normals (§5.2).
+    const std::vector<Vec3> normals =
+        pre.distance == DistanceMode::Tangent ? fix_leaf_normals(tree, cloud) : cloud.normals;
+    RotationSystem rotation(cloud.smoothed, normals);
+    for (std::uint32_t v : tree.order)
+        if (tree.parent[v] != SpanningForest::kRoot) rotation.insert_edge(tree.parent[v], v);
+    stats.tree_edges = rotation.edge_count();
+    Faces faces(rotation);
+    faces.label_all();
+    if (observer) observer->tree_built(rotation, faces);
+    clock.lap("spanning tree");
+
+    begin(exec, "face split");
+    GeometryCheck geometry(index, cloud.smoothed, normals, rotation);
+    stats.face_split =
+        split_faces(rotation, faces, geometry, candidates, triangles, observer, exec.progress);
+    clock.lap("face split");
+
+    std::vector<std::uint32_t> roots;
+    if (options.handles != 0) {
+        begin(exec, "handles");
+        stats.handles =
+            insert_handles(rotation, faces, geometry, index, options, triangles, roots, observer);
+        clock.lap("handles");
+    }
+    // D-13: the ear phase never merges faces (D-12), so it also runs for genus 0.
+    begin(exec, "ear triangulation");
+    stats.ears = triangulate_ears(rotation, faces, cloud, graph.max_length, pre.distance, roots,
+                                  triangles, observer);
+    clock.lap("ear triangulation");
+    return triangles;
+}
+
+} // namespace hrsr::rsr
