@@ -13,12 +13,13 @@ struct HandleCandidate {
     std::uint32_t v, w;
 };
 
-// A reflex corner: two consecutive neighbours more than π apart around v.
-bool is_open(const RotationSystem& rs, std::uint32_t v) {
-    const std::uint32_t d = rs.degree(v);
-    if (d < 2) return false;
-    for (std::uint32_t i = 0; i < d; ++i)
-        if (ccw_angle(rs.dart(v, i).angle, rs.dart(v, rs.next(v, i)).angle) > M_PI) return true;
+// D-22: v lies on a hole, i.e. one of its wedges belongs to a face that is not a recorded
+// triangle. GEL asks for a reflex corner (two consecutive neighbours more than π apart), which
+// misses both sides of a straight or convex crack in regularly sampled data (gaps of exactly π).
+bool is_open(const RotationSystem& rs, const Faces& faces, std::uint32_t v) {
+    if (rs.degree(v) < 2) return false;
+    for (const Dart& d : rs.darts(v))
+        if (!faces.is_recorded_triangle(d.face)) return true;
     return false;
 }
 
@@ -30,7 +31,7 @@ collect_candidates(const RotationSystem& rs, const Faces& faces, GeometryCheck& 
     std::map<FacePair, std::vector<HandleCandidate>> groups;
     std::vector<Neighbour> found;
     for (std::uint32_t v = 0; v < rs.vertex_count(); ++v) {
-        if (!is_open(rs, v)) continue;
+        if (!is_open(rs, faces, v)) continue;
         ++stats.open_vertices;
         index.neighbours_of(v, k, found);
         for (const Neighbour& nb : found) {

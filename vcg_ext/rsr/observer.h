@@ -22,6 +22,9 @@ public:
                                const RotationSystem&, const Faces&,
                                const std::vector<LocalTriangle>& /*triangles*/,
                                std::size_t /*new_triangles*/) {}
+    /// All phases are done; the faces that are not recorded triangles are the holes.
+    virtual void finished(const RotationSystem&, const Faces&,
+                          const std::vector<LocalTriangle>& /*triangles*/) {}
 };
 
 } // namespace hrsr::rsr

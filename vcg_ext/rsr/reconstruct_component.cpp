@@ -77,7 +77,9 @@ std::vector<LocalTriangle> reconstruct_component(const ComponentCloud& cloud,
     begin(exec, "ear triangulation");
     stats.ears = triangulate_ears(rotation, faces, cloud, graph.max_length, pre.distance, roots,
                                   triangles, observer);
+    stats.small_holes = close_small_holes(rotation, faces, triangles, observer);
     clock.lap("ear triangulation");
+    if (observer) observer->finished(rotation, faces, triangles);
     return triangles;
 }
 

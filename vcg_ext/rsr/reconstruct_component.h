@@ -6,6 +6,7 @@
 #include "rsr/ear_triangulation.h"
 #include "rsr/face_split.h"
 #include "rsr/handles.h"
+#include "rsr/small_holes.h"
 
 #include <vector>
 
@@ -19,6 +20,7 @@ struct ComponentStats {
     FaceSplitStats face_split;
     HandleStats handles;
     EarStats ears;
+    SmallHoleStats small_holes;
     std::vector<std::pair<std::string, double>> timings; ///< (phase, seconds)
 };
 

@@ -1,0 +1,116 @@
+#include "rsr/small_holes.h"
+
+#include "geometry.h"
+#include "rsr/face_split.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace hrsr::rsr {
+
+namespace {
+
+double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+    auto angle = [](const Vec3& apex, const Vec3& p, const Vec3& q) {
+        const Vec3 u = p - apex, v = q - apex;
+        const double nu = u.Norm(), nv = v.Norm();
+        if (nu == 0 || nv == 0) return 0.0;
+        return std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0));
+    };
+    return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+}
+
+bool edges_have_room(const RotationSystem& rs, const std::vector<std::uint32_t>& cycle) {
+    for (std::size_t k = 0; k < cycle.size(); ++k)
+        if (triangles_on_edge(rs, cycle[k], cycle[(k + 1) % cycle.size()]) >= 2) return false;
+    return true;
+}
+
+void record(RotationSystem& rs, Faces& faces, std::vector<LocalTriangle>& triangles,
+            std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    count_triangle_edge(rs, a, b);
+    count_triangle_edge(rs, b, c);
+    count_triangle_edge(rs, c, a);
+    faces.mark_recorded_triangle(a, b);
+    triangles.push_back({a, b, c});
+}
+
+// Closes the quad a→b→c→d with two triangles on the diagonal {a, c} or {b, d} with the larger
+// smallest angle, among the diagonals that are not edges yet. When a diagonal lies inside the
+// face in the rotation it is inserted there (a true face split); when the points are so nearly
+// collinear that neither does, the two triangles are only recorded: this is the last phase, so
+// the rotation is not needed any more, and `extra` keeps one diagonal from being used twice.
+bool close_quad(RotationSystem& rs, Faces& faces, const std::vector<std::uint32_t>& q,
+                std::set<std::pair<std::uint32_t, std::uint32_t>>& extra,
+                std::vector<LocalTriangle>& triangles, bool& inside_rotation) {
+    auto diagonal_free = [&](std::uint32_t a, std::uint32_t c) {
+        return a != c && !rs.adjacent(a, c) && !extra.count({std::min(a, c), std::max(a, c)});
+    };
+    auto quality = [&](int k) {
+        const std::uint32_t a = q[k], b = q[k + 1], c = q[k + 2], d = q[(k + 3) % 4];
+        return std::min(smallest_angle(rs.position(a), rs.position(b), rs.position(c)),
+                        smallest_angle(rs.position(a), rs.position(c), rs.position(d)));
+    };
+    int best = -1;
+    double best_angle = -1;
+    for (int k = 0; k < 2; ++k) {
+        if (!diagonal_free(q[k], q[k + 2])) continue;
+        if (const double angle = quality(k); angle > best_angle) {
+            best_angle = angle;
+            best = k;
+        }
+    }
+    if (best < 0) return false;
+    const std::uint32_t a = q[best], b = q[best + 1], c = q[best + 2], d = q[(best + 3) % 4];
+    const std::uint32_t face = rs.dart(a, rs.find(a, b)).face;
+    inside_rotation = faces.face_of_wedge(a, c) == face && faces.face_of_wedge(c, a) == face;
+    if (inside_rotation) {
+        const auto [d1, d2] = rs.insert_edge(a, c);
+        faces.split(d1, d2);
+        record(rs, faces, triangles, a, b, c);
+        record(rs, faces, triangles, a, c, d);
+    } else {
+        extra.insert({std::min(a, c), std::max(a, c)});
+        triangles.push_back({a, b, c});
+        triangles.push_back({a, c, d});
+    }
+    return true;
+}
+
+} // namespace
+
+SmallHoleStats close_small_holes(RotationSystem& rs, Faces& faces,
+                                 std::vector<LocalTriangle>& triangles, Observer* observer) {
+    SmallHoleStats stats;
+    std::set<std::pair<std::uint32_t, std::uint32_t>> extra;
+    for (std::uint32_t v = 0; v < rs.vertex_count(); ++v)
+        for (std::uint32_t i = 0; i < rs.degree(v); ++i) {
+            const std::uint32_t label = rs.dart(v, i).face;
+            if (faces.is_recorded_triangle(label) || faces.length({v, i}) > 4) continue;
+            const std::vector<std::uint32_t> cycle = faces.vertices({v, i});
+            // Visit each face once, from its smallest vertex; skip cycles repeating a vertex.
+            if (*std::min_element(cycle.begin(), cycle.end()) != v) continue;
+            if (std::set<std::uint32_t>(cycle.begin(), cycle.end()).size() != cycle.size())
+                continue;
+            if (!edges_have_room(rs, cycle)) continue;
+            const std::size_t before = triangles.size();
+            if (cycle.size() == 3) {
+                record(rs, faces, triangles, cycle[0], cycle[1], cycle[2]);
+                ++stats.triangles_closed;
+                if (observer)
+                    observer->edge_inserted(Phase::Ears, cycle[0], cycle[1], rs, faces, triangles,
+                                            1);
+            } else if (bool inside = false; cycle.size() == 4 && close_quad(rs, faces, cycle, extra,
+                                                                            triangles, inside)) {
+                ++(inside ? stats.quads_split : stats.quads_recorded_only);
+                const LocalTriangle& t = triangles.back();
+                if (observer && inside)
+                    observer->edge_inserted(Phase::Ears, t[0], t[1], rs, faces, triangles,
+                                            triangles.size() - before);
+            }
+        }
+    return stats;
+}
+
+} // namespace hrsr::rsr
