@@ -10,32 +10,59 @@
 #include "terminal_progress.h"
 
 #include <cstdio>
+#include <map>
 
 namespace hrsr::app {
 
 CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& a) {
     CLI::App* c = app.add_subcommand(
-        "reconstruct", "Reconstruct a triangle mesh whose vertices are the input points.\n"
-                       "Cleans and orients the cloud as `hrsr normals` does, then runs Rotation\n"
-                       "System Reconstruction per connected piece, and writes a binary PLY mesh.");
+        "reconstruct",
+        "Reconstruct a triangle mesh whose vertices are the input points.\n"
+        "Cleans and orients the cloud as `hrsr normals` does; HRsR (default) collapses\n"
+        "it to a fraction of its points, runs Rotation System Reconstruction on them and\n"
+        "replays the collapses as vertex splits; RsR runs on the full cloud.");
     c->add_option("input", a.input, "Point cloud: .ply (ascii/binary), .xyz/.txt, .obj")
         ->required();
     c->add_option("-o,--output", a.output, "Output mesh (binary PLY with vertex normals)")
         ->required();
-    c->add_option("--method", a.method, "Reconstruction method")
-        ->transform(CLI::IsMember({"rsr"}, CLI::ignore_case).description(""))
-        ->type_name("rsr")
+    c->add_option("--method", a.method,
+                  "hrsr (collapse, RsR, re-expansion) or rsr (RsR on all points)")
+        ->transform(CLI::IsMember({"hrsr", "rsr"}, CLI::ignore_case).description(""))
+        ->type_name("hrsr|rsr")
         ->capture_default_str();
-    add_preprocess_options(*c, a.options.preprocess);
-    c->add_option("--n", a.options.max_handle_hops,
+    add_preprocess_options(*c, a.options.rsr.preprocess);
+    c->add_option("--n", a.options.rsr.max_handle_hops,
                   "Handles only join points more than n graph hops apart")
         ->capture_default_str();
-    c->add_option("--handles", a.options.handles,
+    c->add_option("--handles", a.options.rsr.handles,
                   "Handles: -1 = as many as found, 0 = none (genus 0), g = at most g")
         ->capture_default_str();
     c->add_flag_function(
-        "--keep-winding", [&a](std::int64_t) { a.options.orient_outward = false; },
+        "--keep-winding", [&a](std::int64_t) { a.options.rsr.orient_outward = false; },
         "Do not turn closed components outwards (face winding follows the point normals)");
+    c->add_option("--collapse-ratio", a.options.collapse.collapse_ratio,
+                  "HRsR: fraction p of the points RsR runs on (1 = no collapse)")
+        ->capture_default_str();
+    c->add_option("--collapse-k", a.options.collapse.collapse_k,
+                  "HRsR: neighbours of the collapse graph")
+        ->capture_default_str();
+    c->add_option(
+         "--l-min", a.l_min,
+         "HRsR: do not re-expand collapses shorter than this: a length in input units, or\n"
+         "a percentage of the bounding-box diagonal (e.g. 1%); 0 = full detail")
+        ->default_str("0");
+    c->add_option_function<std::string>(
+         "--l-min-mode",
+         [&a](const std::string& v) {
+             a.options.reexpand.l_min_mode = v == "filter" ? LMinMode::Filter : LMinMode::Stop;
+         },
+         "HRsR: stop at the first shorter collapse (coarser level of detail) or skip each one")
+        ->transform(CLI::IsMember({"stop", "filter"}, CLI::ignore_case).description(""))
+        ->type_name("stop|filter")
+        ->default_str("stop");
+    c->add_option("--refinement-iterations", a.options.reexpand.refinement_iterations,
+                  "HRsR: flip passes around each split vertex")
+        ->capture_default_str();
     c->add_option("--threads", a.threads, "Worker threads; 0 = all cores")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
@@ -59,7 +86,8 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
     nlohmann::json timings = nlohmann::json::array();
     for (const auto& [phase, seconds] : r.timings)
         timings.push_back({{"phase", phase}, {"seconds", seconds}});
-    const PreprocessOptions& p = a.options.preprocess;
+    const PreprocessOptions& p = a.options.rsr.preprocess;
+    const ReexpansionStats& e = r.reexpansion;
     return {{"tool", "hrsr"},
             {"version", HRSR_VERSION},
             {"command", "reconstruct"},
@@ -73,20 +101,28 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"distance", p.distance == DistanceMode::Tangent ? "tangent" : "euclidean"},
               {"normals", p.normals == NormalSource::Input ? "input" : "reestimate"},
               {"k_normals", p.k_normals},
+              {"k_smoothing", p.k_smoothing},
               {"min_component_size", p.min_component_size},
-              {"n", a.options.max_handle_hops},
-              {"handles", a.options.handles},
-              {"orient_outward", a.options.orient_outward},
-              {"threads", a.threads}}},
+              {"n", a.options.rsr.max_handle_hops},
+              {"handles", a.options.rsr.handles},
+              {"orient_outward", a.options.rsr.orient_outward},
+              {"threads", a.threads},
+              {"collapse_ratio", a.options.collapse.collapse_ratio},
+              {"collapse_k", a.options.collapse.collapse_k},
+              {"l_min", r.l_min},
+              {"l_min_mode", a.options.reexpand.l_min_mode == LMinMode::Stop ? "stop" : "filter"},
+              {"refinement_iterations", a.options.reexpand.refinement_iterations}}},
             {"points",
              {{"input", r.preprocess.input_points},
               {"used", r.points_used},
               {"dropped",
                {{"non_finite", r.preprocess.count(PointFate::NonFinite)},
                 {"no_normal", r.preprocess.count(PointFate::NoNormal)},
-                {"small_component", r.preprocess.count(PointFate::SmallComponent)},
+                {"small_component", r.preprocess.count(PointFate::SmallComponent) +
+                                        r.dropped_small_coarse_component.size()},
                 {"not_in_any_triangle", r.not_in_triangle.size()}}},
               {"merged_duplicates", r.preprocess.count(PointFate::Duplicate)},
+              {"merged_into_other_vertices", r.merged_points},
               {"not_in_any_triangle_indices", r.not_in_triangle},
               {"referenced", r.referenced_input_points},
               {"vertex_reference_ratio", r.vertex_reference_ratio}}},
@@ -110,6 +146,20 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"handle_edges", r.handle_edges},
               {"handles", r.handles},
               {"ear_edges", r.ear_edges}}},
+            {"hrsr",
+             {{"coarse_points", r.coarse_points},
+              {"records", e.records},
+              {"records_replayed", e.replayed},
+              {"records_failed",
+               {{"no_split_pair", e.failed_no_pair},
+                {"unresolved_crossing", e.failed_crossings},
+                {"node_not_in_mesh", e.skipped_no_vertex}}},
+              {"unresolved_crossings", e.unresolved_crossings},
+              {"crossing_flips", e.crossing_flips},
+              {"boundary_triangles_removed", e.triangles_removed},
+              {"improvement_flips", e.improvement_flips},
+              {"merged_by_l_min", e.merged_by_l_min},
+              {"stopped_at_l_min", e.stopped_at_l_min}}},
             {"preprocess", to_json(r.preprocess)},
             {"timings", timings},
             {"peak_memory_bytes", peak_memory_bytes()}};
@@ -119,11 +169,20 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
     const MeshStats& m = r.mesh;
     std::printf("hrsr reconstruct (%s): %zu input points -> %zu vertices, %zu triangles in %s\n",
                 a.method.c_str(), r.preprocess.input_points, m.vertices, m.faces, a.output.c_str());
-    std::printf("  r_v %.4f %% of input points are vertices; dropped: %zu non-finite, %zu in small "
-                "components, %zu not in any triangle; merged: %zu duplicates\n",
-                100.0 * r.vertex_reference_ratio, r.preprocess.count(PointFate::NonFinite),
-                r.preprocess.count(PointFate::SmallComponent), r.not_in_triangle.size(),
-                r.preprocess.count(PointFate::Duplicate));
+    std::printf(
+        "  r_v %.4f %% of input points are vertices; dropped: %zu non-finite, %zu in small "
+        "components, %zu not in any triangle; merged: %zu duplicates, %zu into other vertices\n",
+        100.0 * r.vertex_reference_ratio, r.preprocess.count(PointFate::NonFinite),
+        r.preprocess.count(PointFate::SmallComponent) + r.dropped_small_coarse_component.size(),
+        r.not_in_triangle.size(), r.preprocess.count(PointFate::Duplicate), r.merged_points);
+    if (a.options.method == Method::Hrsr) {
+        const ReexpansionStats& e = r.reexpansion;
+        std::printf("  HRsR: RsR on %zu points; %zu of %zu splits replayed (%zu failed, %zu merged "
+                    "by l_min), "
+                    "%zu with an unresolved crossing\n",
+                    r.coarse_points, e.replayed, e.records, e.failed_no_pair + e.failed_crossings,
+                    e.merged_by_l_min, e.unresolved_crossings);
+    }
     std::string genus;
     for (const ComponentTopology& c : m.components)
         if (c.closed()) genus += (genus.empty() ? "" : ", ") + std::to_string(c.genus());
@@ -140,7 +199,28 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
 
 } // namespace
 
-void run_reconstruct(const ReconstructArguments& a) {
+// "0.5" → a length; "1%" → a percentage of the bounding-box diagonal.
+void parse_l_min(const std::string& text, ReconstructionOptions& o) {
+    if (text.empty()) return;
+    const bool percent = text.back() == '%';
+    const std::string number = percent ? text.substr(0, text.size() - 1) : text;
+    std::size_t used = 0;
+    double value = 0;
+    try {
+        value = std::stod(number, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != number.size())
+        throw InvalidOption("l-min must be a length or a percentage such as 1% (got \"" + text +
+                            "\")");
+    (percent ? o.l_min_percent : o.reexpand.l_min) = value;
+}
+
+void run_reconstruct(const ReconstructArguments& args) {
+    ReconstructArguments a = args;
+    a.options.method = a.method == "rsr" ? Method::Rsr : Method::Hrsr;
+    parse_l_min(a.l_min, a.options);
     check_output_is_not_input(a.input, a.output);
     if (!a.report.empty()) check_output_is_not_input(a.input, a.report);
     validate(a.options);
@@ -152,7 +232,7 @@ void run_reconstruct(const ReconstructArguments& a) {
     ReconstructionReport report;
     Reconstruction mesh;
     try {
-        mesh = reconstruct_rsr(input, a.options, exec, report);
+        mesh = reconstruct(input, a.options, exec, report);
     } catch (const InvalidInput& e) {
         throw InvalidInput(a.input + ": " + e.what());
     }

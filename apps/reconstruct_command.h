@@ -13,8 +13,9 @@ struct ReconstructArguments {
     std::string input;
     std::string output;
     std::string report; ///< JSON report path; empty = none
-    std::string method = "rsr";
-    RsrOptions options;
+    std::string method = "hrsr";
+    std::string l_min; ///< "0.5" (input units) or "1%" (of the bounding-box diagonal)
+    ReconstructionOptions options;
     int threads = 0;
     bool quiet = false;
 };

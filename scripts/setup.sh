@@ -17,7 +17,7 @@ if [ "$(id -u)" -ne 0 ]; then
 fi
 
 PACKAGES=(
-  build-essential cmake ninja-build dpkg-dev pkg-config git
+  build-essential cmake ninja-build dpkg-dev pkg-config git time python3
   libeigen3-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   clang-format
   # the MeshLab plugin: the installed MeshLab, and what its headers include

@@ -38,4 +38,31 @@ void validate(const RsrOptions& o) {
                                  std::to_string(o.handles) + ")");
 }
 
+void validate(const CollapseOptions& o) {
+    require(std::isfinite(o.collapse_ratio) && o.collapse_ratio > 0 && o.collapse_ratio <= 1,
+            "collapse-ratio must be in (0, 1] (got " + std::to_string(o.collapse_ratio) + ")");
+    require(o.collapse_k >= 1 && o.collapse_k <= 100,
+            "collapse-k must be between 1 and 100 (got " + std::to_string(o.collapse_k) + ")");
+}
+
+void validate(const ReexpandOptions& o) {
+    require(std::isfinite(o.l_min) && o.l_min >= 0,
+            "l-min must be 0 or a positive length (got " + std::to_string(o.l_min) + ")");
+    require(o.refinement_iterations >= 0 && o.refinement_iterations <= 100,
+            "refinement-iterations must be between 0 and 100");
+    require(std::isfinite(o.min_angle_weight) && o.min_angle_weight >= 0,
+            "min-angle-weight must be >= 0");
+}
+
+void validate(const ReconstructionOptions& o) {
+    validate(o.rsr);
+    validate(o.collapse);
+    validate(o.reexpand);
+    require(std::isfinite(o.l_min_percent) && o.l_min_percent >= 0 && o.l_min_percent <= 100,
+            "l-min must be between 0% and 100% of the bounding-box diagonal (got " +
+                std::to_string(o.l_min_percent) + "%)");
+    require(o.l_min_percent == 0 || o.reexpand.l_min == 0,
+            "give l-min either as a length or as a percentage");
+}
+
 } // namespace hrsr

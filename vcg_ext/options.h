@@ -59,6 +59,65 @@ struct RsrOptions {
 
 void validate(const RsrOptions& options);
 
+/// HRsR collapse phase (§6, §9.2).
+struct CollapseOptions {
+    /// p: fraction of the points left after collapsing, in (0, 1]; 1 = no collapse (plain RsR).
+    /// The default is the paper's fastest setting (12.5 %).
+    double collapse_ratio = 0.125;
+    /// Neighbours (true, not counting the point) of the collapse graph (D-14; GEL used 4).
+    int collapse_k = 6;
+    /// Stop after this many collapses in total (0 = no cap; for debugging, §6.2).
+    std::size_t max_collapses = 0;
+};
+
+void validate(const CollapseOptions& options);
+
+/// What happens to collapses shorter than l_min during re-expansion (§8.1).
+enum class LMinMode {
+    Stop,   ///< stop re-expanding at the first record shorter than l_min (the paper)
+    Filter, ///< skip every record shorter than l_min, keep replaying the rest
+};
+
+/// HRsR re-expansion phase (§8, §9.3).
+struct ReexpandOptions {
+    /// l_min in the units of the input; 0 = replay every collapse (full detail).
+    double l_min = 0;
+    LMinMode l_min_mode = LMinMode::Stop;
+    /// After a stop, move every vertex to its node's own input point (the output still
+    /// interpolates input points).
+    bool snap_to_input = true;
+    /// Flip passes around each new vertex (§8.6; GEL's demo uses 0).
+    int refinement_iterations = 1;
+    /// A flip is considered when an angle at the edge's endpoints is below this (degrees).
+    double refinement_angle_degrees = 22.5;
+    /// w in E = E_D + w · E_A (§8.4); 0 skips the min-angle term.
+    double min_angle_weight = 1.0;
+    /// Triangles whose smallest angle is below this (degrees) cost the penalty instead.
+    double min_angle_threshold_degrees = 3.0;
+    double min_angle_penalty = 0.1;
+    /// Fail a record (alias its point) instead of splitting when a crossing cannot be resolved.
+    bool strict_crossings = false;
+};
+
+void validate(const ReexpandOptions& options);
+
+enum class Method {
+    Hrsr, ///< collapse → RsR → re-expansion (the default: RsR's quality, a fraction of its cost)
+    Rsr,  ///< RsR on the full cloud
+};
+
+/// Everything `reconstruct` needs.
+struct ReconstructionOptions {
+    Method method = Method::Hrsr;
+    RsrOptions rsr;
+    CollapseOptions collapse;
+    ReexpandOptions reexpand;
+    /// l_min as a percentage of the bounding-box diagonal; used instead of reexpand.l_min when > 0.
+    double l_min_percent = 0;
+};
+
+void validate(const ReconstructionOptions& options);
+
 /// Constants of the method that are not options (§9.4); named so the code says what they are.
 namespace constants {
 /// Smoothing: normal filter of the neighbours (§4.4).
@@ -86,6 +145,10 @@ inline constexpr double kGeometryNormalDot = 0.5;
 inline constexpr double kMaxTriangleAngleDegrees = 175.0;
 /// Handle groups with this many candidates or fewer are ignored (§5.6).
 inline constexpr std::size_t kMinHandleGroupSize = 5;
+/// Re-expansion (§8.3, §8.4): crossing search extension, round cap, dihedral guard on 1 − cos.
+inline constexpr double kCrossingExtension = 1.11;
+inline constexpr int kCrossingRounds = 100;
+inline constexpr double kDihedralGuard = 1.75;
 } // namespace constants
 
 } // namespace hrsr

@@ -1,8 +1,12 @@
 #include "reconstruction.h"
 
+#include "errors.h"
+#include "hrsr/collapse.h"
 #include "mesh/fans.h"
+#include "preprocess/components.h"
+#include "preprocess/pca_normals.h"
 #include "preprocess/preprocess.h"
-#include "rsr/reconstruct_component.h"
+#include "rsr/reconstruct_cloud.h"
 
 #include <algorithm>
 #include <chrono>
@@ -11,98 +15,39 @@ namespace hrsr {
 
 namespace {
 
-// Components this large use every thread inside; smaller ones run side by side.
-constexpr std::size_t kLargeComponent = 20000;
+class Timer {
+public:
+    explicit Timer(std::vector<std::pair<std::string, double>>& timings, std::string phase)
+        : timings_(timings), phase_(std::move(phase)) {}
+    ~Timer() {
+        timings_.emplace_back(
+            phase_,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+    }
 
-struct ComponentResult {
-    std::vector<std::uint32_t> points; ///< prepared-cloud indices, increasing
-    std::vector<rsr::LocalTriangle> triangles;
-    rsr::ComponentStats stats;
+private:
+    std::vector<std::pair<std::string, double>>& timings_;
+    std::string phase_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-std::vector<ComponentResult> split_by_component(const PreparedCloud& cloud) {
-    std::vector<ComponentResult> parts(cloud.component_count);
-    for (std::uint32_t i = 0; i < cloud.size(); ++i) parts[cloud.component[i]].points.push_back(i);
-    return parts;
-}
+/// A mesh over a subset of a cloud's points, manifold after the fan split (§5.8).
+struct CompactMesh {
+    std::vector<std::uint32_t> vertex_point; ///< per vertex: the cloud point (copies share it)
+    std::vector<Triangle> triangles;         ///< over vertices
+    std::vector<std::uint32_t> unused;       ///< cloud points in no triangle
+    std::size_t copies = 0;
+};
 
-void reconstruct_part(const PreparedCloud& cloud, ComponentResult& part, const RsrOptions& options,
-                      const Execution& exec, rsr::Observer* observer) {
-    rsr::ComponentCloud local;
-    for (std::uint32_t i : part.points) {
-        local.positions.push_back(cloud.positions[i]);
-        local.smoothed.push_back(cloud.smoothed[i]);
-        local.normals.push_back(cloud.normals[i]);
-    }
-    part.triangles = rsr::reconstruct_component(local, options, exec, part.stats, observer);
-}
-
-void reconstruct_parts(const PreparedCloud& cloud, std::vector<ComponentResult>& parts,
-                       const RsrOptions& options, const Execution& exec, rsr::Observer* observer) {
-    std::vector<std::size_t> small;
-    for (std::size_t c = 0; c < parts.size(); ++c) {
-        if (observer || parts[c].points.size() >= kLargeComponent)
-            reconstruct_part(cloud, parts[c], options, exec, observer);
-        else
-            small.push_back(c);
-    }
-    if (exec.progress && !small.empty()) exec.progress->begin("small components");
-    const Execution inner{1, nullptr};
-    parallel_for(exec, small.size(), [&](std::size_t s) {
-        reconstruct_part(cloud, parts[small[s]], options, inner, nullptr);
-    });
-}
-
-void add_timings(std::vector<std::pair<std::string, double>>& total,
-                 const std::vector<std::pair<std::string, double>>& more) {
-    for (const auto& [phase, seconds] : more) {
-        auto it = std::find_if(total.begin(), total.end(),
-                               [&](const auto& e) { return e.first == phase; });
-        if (it == total.end())
-            total.emplace_back(phase, seconds);
-        else
-            it->second += seconds;
-    }
-}
-
-// D-6: closed components enclosing a negative volume are turned inside out.
-void orient_outward(const PreparedCloud& cloud, Reconstruction& mesh,
-                    const std::vector<std::uint32_t>& source, ReconstructionReport& report) {
-    std::size_t count = 0;
-    const std::vector<std::uint32_t> component =
-        triangle_components(source.size(), mesh.triangles, count);
-    std::vector<Vec3> positions(source.size());
-    for (std::size_t v = 0; v < source.size(); ++v) positions[v] = cloud.positions[source[v]];
-    const MeshStats stats = measure_mesh(source.size(), mesh.triangles);
-    for (std::uint32_t c = 0; c < count; ++c) {
-        if (!stats.components[c].closed() ||
-            signed_volume(positions, mesh.triangles, component, c) >= 0)
-            continue;
-        ++report.flipped_components;
-        std::vector<std::uint8_t> flip_vertex(source.size(), 0);
-        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-            if (component[t] != c) continue;
-            std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
-            for (std::uint32_t v : mesh.triangles[t]) flip_vertex[v] = 1;
-        }
-        for (std::size_t v = 0; v < source.size(); ++v)
-            if (flip_vertex[v]) mesh.vertex_normals[v] = -mesh.vertex_normals[v];
-    }
-}
-
-// Output vertices are the used points in input order, then copies for non-manifold fans.
-Reconstruction assemble(const PreparedCloud& cloud, const std::vector<ComponentResult>& parts,
-                        const RsrOptions& options, ReconstructionReport& report) {
-    std::vector<Triangle> triangles;
-    for (const ComponentResult& part : parts)
-        for (const rsr::LocalTriangle& t : part.triangles)
-            triangles.push_back({part.points[t[0]], part.points[t[1]], part.points[t[2]]});
-    std::vector<std::uint32_t> vertex_of(cloud.size(), ~0u), point_of_vertex;
+// Used points become vertices in point order; non-manifold ones get one copy per extra fan.
+CompactMesh compact(std::size_t points, std::vector<Triangle> triangles) {
+    CompactMesh m;
+    std::vector<std::uint32_t> vertex_of(points, ~0u), point_of_vertex;
     for (const Triangle& t : triangles)
         for (std::uint32_t p : t) vertex_of[p] = 0;
-    for (std::uint32_t p = 0; p < cloud.size(); ++p) {
+    for (std::uint32_t p = 0; p < points; ++p) {
         if (vertex_of[p] == ~0u) {
-            report.not_in_triangle.push_back(cloud.input_index[p]);
+            m.unused.push_back(p);
             continue;
         }
         vertex_of[p] = std::uint32_t(point_of_vertex.size());
@@ -112,32 +57,142 @@ Reconstruction assemble(const PreparedCloud& cloud, const std::vector<ComponentR
         for (std::uint32_t& p : t) p = vertex_of[p];
     const std::vector<std::uint32_t> copies_of =
         split_non_manifold_vertices(point_of_vertex.size(), triangles);
-    report.vertex_copies = copies_of.size() - point_of_vertex.size();
+    m.copies = copies_of.size() - point_of_vertex.size();
+    for (std::uint32_t v : copies_of) m.vertex_point.push_back(point_of_vertex[v]);
+    m.triangles = std::move(triangles);
+    return m;
+}
 
+// D-6: closed components enclosing a negative volume are turned inside out.
+void orient_outward(const std::vector<Vec3>& positions, Reconstruction& mesh,
+                    ReconstructionReport& report) {
+    std::size_t count = 0;
+    const std::vector<std::uint32_t> component =
+        triangle_components(positions.size(), mesh.triangles, count);
+    const MeshStats stats = measure_mesh(positions.size(), mesh.triangles);
+    for (std::uint32_t c = 0; c < count; ++c) {
+        if (!stats.components[c].closed() ||
+            signed_volume(positions, mesh.triangles, component, c) >= 0)
+            continue;
+        ++report.flipped_components;
+        std::vector<std::uint8_t> flip_vertex(positions.size(), 0);
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+            if (component[t] != c) continue;
+            std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+            for (std::uint32_t v : mesh.triangles[t]) flip_vertex[v] = 1;
+        }
+        for (std::size_t v = 0; v < positions.size(); ++v)
+            if (flip_vertex[v]) mesh.vertex_normals[v] = -mesh.vertex_normals[v];
+    }
+}
+
+// The output: vertices at the cloud points they stand for, with their normals.
+Reconstruction make_output(const PreparedCloud& cloud,
+                           const std::vector<std::uint32_t>& vertex_point,
+                           std::vector<Triangle> triangles, bool outward,
+                           ReconstructionReport& report) {
     Reconstruction mesh;
     mesh.triangles = std::move(triangles);
-    std::vector<std::uint32_t> source(copies_of.size());
-    for (std::size_t v = 0; v < copies_of.size(); ++v) {
-        source[v] = point_of_vertex[copies_of[v]];
-        mesh.vertex_input_index.push_back(cloud.input_index[source[v]]);
-        mesh.vertex_normals.push_back(cloud.normals[source[v]]);
+    std::vector<Vec3> positions;
+    for (std::uint32_t p : vertex_point) {
+        mesh.vertex_input_index.push_back(cloud.input_index[p]);
+        mesh.vertex_normals.push_back(cloud.normals[p]);
+        positions.push_back(cloud.positions[p]);
     }
-    if (options.orient_outward) orient_outward(cloud, mesh, source, report);
+    if (outward) orient_outward(positions, mesh, report);
     return mesh;
 }
 
+// r_v: input points that are vertices, or exact duplicates of one (D-3). A duplicate of a point
+// that is not a vertex shares that point's outcome (§13 item 10: every point has one).
 void account(const PointSet& input, const Reconstruction& mesh, ReconstructionReport& report) {
     const PreprocessReport& pre = report.preprocess;
-    std::vector<std::uint8_t> referenced(input.size(), 0);
-    for (std::uint32_t i : mesh.vertex_input_index) referenced[i] = 1;
-    for (std::size_t i = 0; i < input.size(); ++i)
-        if (pre.fate[i] == PointFate::Duplicate && referenced[pre.duplicate_of[i]])
-            referenced[i] = 1;
+    enum : std::uint8_t { kOther, kVertex, kNoTriangle, kSmallCoarse };
+    std::vector<std::uint8_t> outcome(input.size(), kOther);
+    for (std::uint32_t i : mesh.vertex_input_index) outcome[i] = kVertex;
+    for (std::uint32_t i : report.not_in_triangle) outcome[i] = kNoTriangle;
+    for (std::uint32_t i : report.dropped_small_coarse_component) outcome[i] = kSmallCoarse;
+    for (std::uint32_t i = 0; i < input.size(); ++i) {
+        if (pre.fate[i] != PointFate::Duplicate) continue;
+        switch (outcome[pre.duplicate_of[i]]) {
+        case kVertex:
+            outcome[i] = kVertex;
+            break;
+        case kNoTriangle:
+            report.not_in_triangle.push_back(i);
+            break;
+        case kSmallCoarse:
+            report.dropped_small_coarse_component.push_back(i);
+            break;
+        default:
+            if (report.coarse_points > 0)
+                ++report.merged_points; // its point merged into another vertex
+        }
+    }
+    std::sort(report.not_in_triangle.begin(), report.not_in_triangle.end());
+    std::sort(report.dropped_small_coarse_component.begin(),
+              report.dropped_small_coarse_component.end());
     report.referenced_input_points =
-        std::size_t(std::count(referenced.begin(), referenced.end(), 1));
+        std::size_t(std::count(outcome.begin(), outcome.end(), kVertex));
     report.vertex_reference_ratio =
         input.size() ? double(report.referenced_input_points) / double(input.size()) : 0;
     report.mesh = measure_mesh(mesh.vertex_input_index.size(), mesh.triangles);
+}
+
+void take_rsr_stats(const rsr::CloudMesh& m, ReconstructionReport& report) {
+    report.candidates = m.candidates;
+    report.tree_edges = m.tree_edges;
+    report.face_split_edges = m.face_split_edges;
+    report.handle_edges = m.handle_edges;
+    report.handles = m.handles;
+    report.ear_edges = m.ear_edges;
+    rsr::add_timings(report.timings, m.timings);
+}
+
+// §7: the collapsed points, smoothed (tangent mode) and split into components like RsR's input.
+PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collapsed,
+                       const PreprocessOptions& options, const Execution& exec,
+                       ReconstructionReport& report, std::vector<std::uint32_t>& dropped) {
+    PreparedCloud coarse;
+    coarse.positions = collapsed.positions;
+    coarse.normals = collapsed.normals;
+    coarse.input_index = collapsed.survivors; // node ids = indices into `cloud`
+    coarse.normalisation = cloud.normalisation;
+    coarse.smoothed =
+        smoothed_positions(coarse.positions, coarse.normals, options, exec, report.preprocess);
+    const CsrGraph graph = neighbour_graph(coarse.smoothed, options.k, exec);
+    const ComponentSplit split =
+        split_components(graph, coarse.positions, coarse.smoothed, coarse.normals, options, exec);
+    PreparedCloud kept;
+    kept.normalisation = coarse.normalisation;
+    kept.component_count = split.count;
+    for (std::size_t i = 0; i < coarse.size(); ++i) {
+        if (split.label[i] == ComponentSplit::kDropped) {
+            dropped.push_back(coarse.input_index[i]);
+            continue;
+        }
+        kept.input_index.push_back(coarse.input_index[i]);
+        kept.positions.push_back(coarse.positions[i]);
+        kept.smoothed.push_back(coarse.smoothed[i]);
+        kept.normals.push_back(coarse.normals[i]);
+        kept.component.push_back(split.label[i]);
+    }
+    report.preprocess.components_kept = split.count;
+    report.preprocess.components_dropped = split.dropped_components;
+    report.preprocess.component_sizes = split.sizes;
+    report.preprocess.cut_length = split.cut_length / cloud.normalisation.scale;
+    report.preprocess.edges_cut = split.edges_cut;
+    return kept;
+}
+
+// The coarse survivor at the root of each node's collapse tree.
+std::vector<std::uint32_t> tree_roots(std::size_t nodes,
+                                      const std::vector<CollapseRecord>& records) {
+    std::vector<std::uint32_t> root(nodes);
+    for (std::uint32_t i = 0; i < nodes; ++i) root[i] = i;
+    for (std::size_t k = records.size(); k-- > 0;)
+        root[records[k].latent] = root[records[k].active];
+    return root;
 }
 
 } // namespace
@@ -149,26 +204,102 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     const PreparedCloud cloud = preprocess(input, options.preprocess, exec, report.preprocess);
     report.points_used = cloud.size();
     report.timings = report.preprocess.timings;
-
-    std::vector<ComponentResult> parts = split_by_component(cloud);
-    reconstruct_parts(cloud, parts, options, exec, observer);
-    for (const ComponentResult& part : parts) {
-        const rsr::ComponentStats& s = part.stats;
-        report.candidates += s.candidates;
-        report.tree_edges += s.tree_edges;
-        report.face_split_edges += s.face_split.inserted;
-        report.handle_edges += s.handles.edges_inserted;
-        report.handles += s.handles.handles;
-        report.ear_edges += s.ears.ears;
-        add_timings(report.timings, s.timings);
-    }
-    const auto start = std::chrono::steady_clock::now();
-    Reconstruction mesh = assemble(cloud, parts, options, report);
+    rsr::CloudMesh rsr_mesh = rsr::reconstruct_cloud(cloud, options, exec, observer);
+    take_rsr_stats(rsr_mesh, report);
+    Timer timer(report.timings, "assembly");
+    CompactMesh m = compact(cloud.size(), std::move(rsr_mesh.triangles));
+    for (std::uint32_t p : m.unused) report.not_in_triangle.push_back(cloud.input_index[p]);
+    report.vertex_copies = m.copies;
+    Reconstruction mesh =
+        make_output(cloud, m.vertex_point, std::move(m.triangles), options.orient_outward, report);
     account(input, mesh, report);
-    report.timings.emplace_back(
-        "assembly",
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return mesh;
+}
+
+Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptions& options,
+                                const Execution& exec, ReconstructionReport& report,
+                                rsr::Observer* observer,
+                                ReexpansionObserver* reexpansion_observer) {
+    validate(options);
+    const PreprocessOptions& pre = options.rsr.preprocess;
+    const PreparedCloud cloud =
+        prepare_points(input, pre, exec, report.preprocess, nullptr, PrepareFor::Collapse);
+    report.points_used = cloud.size();
+    report.timings = report.preprocess.timings;
+
+    CollapsedCloud collapsed;
+    {
+        Timer timer(report.timings, "collapse");
+        collapsed = collapse(cloud.positions, cloud.normals, options.collapse, exec);
+    }
+    report.coarse_points = collapsed.survivors.size();
+    std::vector<std::uint32_t> dropped_nodes;
+    PreparedCloud coarse;
+    {
+        Timer timer(report.timings, "hand-off");
+        coarse = hand_off(cloud, collapsed, pre, exec, report, dropped_nodes);
+    }
+    if (coarse.size() == 0)
+        throw InvalidInput(
+            "no point is left after collapsing: every collapsed component is smaller than " +
+            std::to_string(pre.min_component_size) + " points; raise collapse-ratio");
+    rsr::CloudMesh rsr_mesh = rsr::reconstruct_cloud(coarse, options.rsr, exec, observer);
+    take_rsr_stats(rsr_mesh, report);
+
+    CompactMesh m = compact(coarse.size(), std::move(rsr_mesh.triangles));
+    report.vertex_copies = m.copies;
+    std::vector<std::uint32_t> coarse_vertex_node;
+    std::vector<Vec3> coarse_positions;
+    for (std::uint32_t p : m.vertex_point) {
+        coarse_vertex_node.push_back(coarse.input_index[p]);
+        coarse_positions.push_back(coarse.positions[p]);
+    }
+    report.l_min = options.l_min_percent > 0
+                       ? options.l_min_percent / 100.0 * report.preprocess.bbox_diagonal
+                       : options.reexpand.l_min;
+    ReexpandedMesh fine;
+    {
+        Timer timer(report.timings, "re-expansion");
+        fine = replay_collapses(cloud.positions, cloud.normals, coarse_vertex_node,
+                                coarse_positions, m.triangles, collapsed.records, options.reexpand,
+                                report.l_min * cloud.normalisation.scale, exec, report.reexpansion,
+                                reexpansion_observer);
+    }
+
+    Timer timer(report.timings, "assembly");
+    // Fates of the points that are not their own vertex (§8.7).
+    const std::vector<std::uint32_t> root = tree_roots(cloud.size(), collapsed.records);
+    std::vector<std::uint8_t> dropped_root(cloud.size(), 0);
+    for (std::uint32_t node : dropped_nodes) dropped_root[node] = 1;
+    for (std::uint32_t node = 0; node < cloud.size(); ++node) {
+        if (fine.alias[node] == node) continue;
+        if (fine.alias[node] != ReexpandedMesh::kNoNode)
+            ++report.merged_points;
+        else if (dropped_root[root[node]])
+            report.dropped_small_coarse_component.push_back(cloud.input_index[node]);
+        else
+            report.not_in_triangle.push_back(cloud.input_index[node]);
+    }
+    std::sort(report.not_in_triangle.begin(), report.not_in_triangle.end());
+    std::sort(report.dropped_small_coarse_component.begin(),
+              report.dropped_small_coarse_component.end());
+    // The re-expanded mesh is manifold by construction; the fan split is a safety net.
+    CompactMesh out = compact(fine.vertex_node.size(), std::move(fine.triangles));
+    report.vertex_copies += out.copies;
+    std::vector<std::uint32_t> vertex_point;
+    for (std::uint32_t v : out.vertex_point) vertex_point.push_back(fine.vertex_node[v]);
+    Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles),
+                                      options.rsr.orient_outward, report);
+    account(input, mesh, report);
+    return mesh;
+}
+
+Reconstruction reconstruct(const PointSet& input, const ReconstructionOptions& options,
+                           const Execution& exec, ReconstructionReport& report,
+                           rsr::Observer* observer) {
+    if (options.method == Method::Rsr)
+        return reconstruct_rsr(input, options.rsr, exec, report, observer);
+    return reconstruct_hrsr(input, options, exec, report, observer);
 }
 
 } // namespace hrsr

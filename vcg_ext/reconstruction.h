@@ -1,6 +1,7 @@
 // The library's entry point: point set in, triangle mesh and report out.
 #pragma once
 
+#include "hrsr/reexpansion.h"
 #include "mesh/mesh_stats.h"
 #include "options.h"
 #include "parallel.h"
@@ -39,6 +40,14 @@ struct ReconstructionReport {
     MeshStats mesh;
     std::vector<std::pair<std::string, double>>
         timings; ///< (phase, seconds), summed over components
+
+    // HRsR only.
+    std::size_t coarse_points = 0; ///< points left after collapsing (given to RsR)
+    std::size_t merged_points =
+        0; ///< input points represented by another point's vertex (l_min, failed splits)
+    std::vector<std::uint32_t> dropped_small_coarse_component; ///< input indices
+    double l_min = 0;                                          ///< in input units
+    ReexpansionStats reexpansion;
 };
 
 /// Rotation System Reconstruction of the whole cloud (§2.1): pre-processing, then RsR per
@@ -47,5 +56,17 @@ struct ReconstructionReport {
 Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
                                const Execution& exec, ReconstructionReport& report,
                                rsr::Observer* observer = nullptr);
+
+/// Hierarchical RsR (§2.2): pre-processing, collapse to a fraction p of the points, RsR on them,
+/// re-expansion by vertex splits (down to l_min). The observer watches the RsR stage.
+Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptions& options,
+                                const Execution& exec, ReconstructionReport& report,
+                                rsr::Observer* observer = nullptr,
+                                ReexpansionObserver* reexpansion_observer = nullptr);
+
+/// Dispatches on options.method.
+Reconstruction reconstruct(const PointSet& input, const ReconstructionOptions& options,
+                           const Execution& exec, ReconstructionReport& report,
+                           rsr::Observer* observer = nullptr);
 
 } // namespace hrsr

@@ -79,13 +79,27 @@ void propagate_fates_to_duplicates(PreprocessReport& report) {
 
 } // namespace
 
+std::vector<Vec3> smoothed_positions(const std::vector<Vec3>& positions,
+                                     const std::vector<Vec3>& normals,
+                                     const PreprocessOptions& options, const Execution& exec,
+                                     PreprocessReport& report) {
+    std::vector<Vec3> smoothed = positions;
+    if (options.distance != DistanceMode::Tangent || positions.size() < 2) return smoothed;
+    for (int round = 0; round < 2; ++round) {
+        const KnnIndex index(smoothed);
+        smooth(smoothed, normals, index, true, options, exec, report);
+    }
+    return smoothed;
+}
+
 CsrGraph neighbour_graph(const std::vector<Vec3>& positions, int k, const Execution& exec) {
     const KnnIndex index(positions);
     return symmetric_union(knn_table(index, k, exec), positions.size(), exec);
 }
 
 PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& options,
-                             const Execution& exec, PreprocessReport& report, CsrGraph* graph) {
+                             const Execution& exec, PreprocessReport& report, CsrGraph* graph,
+                             PrepareFor purpose) {
     validate(options);
     PreparedCloud cloud;
     {
@@ -104,7 +118,9 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     // built on them; with estimated normals they are re-estimated after each round.
     auto index = std::make_unique<KnnIndex>(cloud.smoothed);
     if (estimated) cloud.normals = estimate(cloud.smoothed, *index, options, exec, report);
-    if (tangent) {
+    // With input normals, HRsR needs no smoothing of the full cloud: it collapses the unsmoothed
+    // positions and smooths the collapsed cloud (§7).
+    if (tangent && (estimated || purpose == PrepareFor::Rsr)) {
         for (int round = 0; round < 2; ++round) {
             smooth(cloud.smoothed, cloud.normals, *index, !estimated, options, exec, report);
             index = std::make_unique<KnnIndex>(cloud.smoothed);

@@ -28,13 +28,25 @@ struct PreparedCloud {
     std::size_t size() const { return positions.size(); }
 };
 
+/// What the prepared cloud is for.
+enum class PrepareFor {
+    Rsr,     ///< RsR runs on it: smoothed positions are needed (tangent mode)
+    Collapse ///< HRsR collapses it first (§2.2): smoothing only as part of normal estimation
+};
+
 /// §4.1–4.5: sanitising, normals (input or PCA), smoothing (tangent mode), orientation (when
 /// normals were estimated). If `graph` is given, it receives the symmetric kNN_k graph on the
 /// smoothed positions (built here anyway when orienting). Fills `report`; throws InvalidOption,
 /// InvalidInput (nothing usable left) or Cancelled.
 PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& options,
                              const Execution& exec, PreprocessReport& report,
-                             CsrGraph* graph = nullptr);
+                             CsrGraph* graph = nullptr, PrepareFor purpose = PrepareFor::Rsr);
+
+/// Tangent mode: two smoothing rounds with the normals fixed (§4.4, §7); Euclidean mode: a copy.
+std::vector<Vec3> smoothed_positions(const std::vector<Vec3>& positions,
+                                     const std::vector<Vec3>& normals,
+                                     const PreprocessOptions& options, const Execution& exec,
+                                     PreprocessReport& report);
 
 /// The symmetric union of the k-nearest-neighbour relation on `positions` (D-7).
 CsrGraph neighbour_graph(const std::vector<Vec3>& positions, int k, const Execution& exec);

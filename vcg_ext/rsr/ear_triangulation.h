@@ -5,6 +5,7 @@
 #include "options.h"
 #include "rsr/candidate_graph.h"
 #include "rsr/faces.h"
+#include "rsr/geometry_check.h"
 #include "rsr/observer.h"
 
 #include <vector>
@@ -17,8 +18,10 @@ struct EarStats {
 };
 
 /// `lengths_cloud` gives the positions/normals for ear scores (those of the candidate graph);
-/// `max_length` bounds them. Handle roots are explored first.
-EarStats triangulate_ears(RotationSystem& rotation, Faces& faces,
+/// `max_length` bounds them. Handle roots are explored first. An ear edge must also pass the
+/// geometry check of the face split (§5.5.2 step 3): GEL's ears have no geometric test, and where
+/// a crack stays open (genus limited, D-13) they would bridge it with overlapping triangles.
+EarStats triangulate_ears(RotationSystem& rotation, Faces& faces, GeometryCheck& geometry,
                           const ComponentCloud& lengths_cloud,
                           const std::vector<double>& max_length, DistanceMode mode,
                           const std::vector<std::uint32_t>& roots,

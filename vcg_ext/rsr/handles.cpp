@@ -92,7 +92,10 @@ HandleStats insert_handles(RotationSystem& rs, Faces& faces, GeometryCheck& geom
 
     for (const auto& [pair, list] : groups) {
         if (list->size() <= constants::kMinHandleGroupSize) break;
-        if (options.handles >= 0 && stats.handles >= std::size_t(options.handles)) break;
+        if (options.handles >= 0 && stats.handles >= std::size_t(options.handles)) {
+            stats.limited = true;
+            break;
+        }
         ++stats.groups;
         bool merged = false;
         for (const HandleCandidate& c : *list) {

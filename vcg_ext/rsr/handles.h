@@ -17,6 +17,7 @@ struct HandleStats {
     std::size_t groups = 0;  ///< candidate groups (pairs of faces) of more than 5
     std::size_t handles = 0; ///< groups whose insertions merged two distinct faces (genus + 1 each)
     std::size_t edges_inserted = 0; ///< all handle-phase edges (merges and later splits)
+    bool limited = false; ///< the genus limit stopped a group that would have become a handle
 };
 
 /// Inserts handle edges; `roots` receives their endpoints (explored first by the ears).

@@ -72,6 +72,7 @@ bool close_quad(RotationSystem& rs, Faces& faces, const std::vector<std::uint32_
         record(rs, faces, triangles, a, c, d);
     } else {
         extra.insert({std::min(a, c), std::max(a, c)});
+        faces.mark_recorded_triangle(a, b); // the quad is closed: nothing may enter it any more
         triangles.push_back({a, b, c});
         triangles.push_back({a, c, d});
     }

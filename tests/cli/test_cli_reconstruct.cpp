@@ -1,0 +1,216 @@
+// End-to-end tests of `hrsr reconstruct --method rsr`: exit codes, the written mesh (vertices at
+// the input coordinates, bit-exact; faces), the JSON report and determinism across threads.
+#include "io/point_set_reader.h"
+#include "reconstruction.h"
+#include "temp_folder.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace hrsr {
+namespace {
+
+struct Outcome {
+    int exit_code;
+    std::string out;
+    std::string err;
+};
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+int lines(const std::string& s) {
+    return int(std::count(s.begin(), s.end(), '\n'));
+}
+
+class CliReconstruct : public ::testing::Test {
+protected:
+    // Runs hrsr with `args`, no stdin.
+    Outcome hrsr(const std::string& args) {
+        const fs::path out = folder_.root() / "stdout.txt", err = folder_.root() / "stderr.txt";
+        const std::string cmd = std::string(HRSR_EXE) + " " + args + " < /dev/null > " +
+                                out.string() + " 2> " + err.string();
+        const int status = std::system(cmd.c_str());
+        Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+        fs::remove(out);
+        fs::remove(err);
+        return r;
+    }
+    std::string path(const std::string& name) const { return folder_.path(name); }
+
+    testing::TempFolder folder_;
+};
+
+/// The triangles of a binary little-endian PLY whose vertex properties are all float or double
+/// and whose faces are `list uchar int` (what hrsr writes). Empty on any other layout.
+bool read_ply_faces(const std::string& bytes, std::size_t& vertices,
+                    std::vector<Triangle>& triangles) {
+    const std::size_t end = bytes.find("end_header\n");
+    if (end == std::string::npos) return false;
+    std::istringstream header(bytes.substr(0, end));
+    std::string line, element;
+    std::size_t stride = 0, faces = 0;
+    bool face_list = false;
+    while (std::getline(header, line)) {
+        std::istringstream words(line);
+        std::string word, type;
+        words >> word;
+        if (word == "format" && line != "format binary_little_endian 1.0") return false;
+        if (word == "element") {
+            std::size_t count = 0;
+            words >> element >> count;
+            if (element == "vertex")
+                vertices = count;
+            else if (element == "face")
+                faces = count;
+            else
+                return false;
+        } else if (word == "property" && element == "vertex") {
+            words >> type;
+            if (type == "float")
+                stride += 4;
+            else if (type == "double")
+                stride += 8;
+            else
+                return false;
+        } else if (word == "property" && element == "face") {
+            face_list = line == "property list uchar int vertex_indices";
+        }
+    }
+    if (!face_list) return false;
+    std::size_t at = end + std::strlen("end_header\n") + vertices * stride;
+    if (bytes.size() != at + faces * 13) return false;
+    triangles.resize(faces);
+    for (Triangle& t : triangles) {
+        if (bytes[at] != 3) return false;
+        for (int k = 0; k < 3; ++k) {
+            std::int32_t index;
+            std::memcpy(&index, bytes.data() + at + 1 + 4 * k, 4);
+            t[k] = std::uint32_t(index);
+        }
+        at += 13;
+    }
+    return true;
+}
+
+bool same_bits(const Vec3& a, const Vec3& b) {
+    return std::memcmp(&a[0], &b[0], sizeof(double)) == 0 &&
+           std::memcmp(&a[1], &b[1], sizeof(double)) == 0 &&
+           std::memcmp(&a[2], &b[2], sizeof(double)) == 0;
+}
+
+TEST_F(CliReconstruct, WritesAMeshOverTheInputPointsAndAReport) {
+    const Outcome r = hrsr("reconstruct " + std::string(HRSR_SAMPLE) + " --method rsr -o " +
+                           path("out.ply") + " --report " + path("r.json"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+
+    const nlohmann::json report = nlohmann::json::parse(slurp(path("r.json")));
+    const nlohmann::json& mesh = report.at("mesh");
+    const double ratio = report.at("points").at("vertex_reference_ratio").get<double>();
+    EXPECT_GT(ratio, 0.99);
+    EXPECT_LE(ratio, 1.0);
+    for (const char* key : {"boundary_edges", "boundary_loops", "non_manifold_edges",
+                            "non_manifold_vertices", "components", "vertices", "faces"})
+        ASSERT_TRUE(mesh.contains(key) && mesh.at(key).is_number_unsigned()) << key;
+    EXPECT_EQ(mesh.at("non_manifold_edges").get<long>(), 0);
+    EXPECT_EQ(mesh.at("non_manifold_vertices").get<long>(), 0);
+    EXPECT_GE(mesh.at("components").get<long>(), 1);
+    EXPECT_EQ(mesh.at("boundary_edges").get<long>() == 0,
+              mesh.at("boundary_loops").get<long>() == 0);
+    ASSERT_TRUE(mesh.at("genus_of_closed_components").is_array());
+    EXPECT_LE(mesh.at("genus_of_closed_components").size(),
+              mesh.at("components").get<std::size_t>());
+    for (const nlohmann::json& genus : mesh.at("genus_of_closed_components"))
+        EXPECT_GE(genus.get<long>(), 0);
+    ASSERT_TRUE(report.at("rsr").at("handles").is_number_unsigned());
+    ASSERT_TRUE(report.at("timings").is_array());
+    EXPECT_FALSE(report.at("timings").empty());
+    for (const nlohmann::json& t : report.at("timings")) {
+        EXPECT_TRUE(t.at("phase").is_string());
+        EXPECT_GE(t.at("seconds").get<double>(), 0.0);
+    }
+    EXPECT_GT(report.at("peak_memory_bytes").get<double>(), 0.0);
+
+    // The mesh: as many vertices as reported, each at the coordinates of an input point.
+    const PointSet input = io::read_point_set(HRSR_SAMPLE);
+    const PointSet out = io::read_point_set(path("out.ply"));
+    ASSERT_EQ(out.size(), mesh.at("vertices").get<std::size_t>());
+    std::map<std::array<double, 3>, std::uint32_t> input_point;
+    for (std::uint32_t i = 0; i < input.size(); ++i)
+        input_point.emplace(std::array<double, 3>{input.positions[i][0], input.positions[i][1],
+                                                  input.positions[i][2]},
+                            i);
+    std::size_t not_input = 0;
+    for (const Vec3& p : out.positions)
+        if (!input_point.count({p[0], p[1], p[2]})) ++not_input;
+    EXPECT_EQ(not_input, 0u);
+
+    // Faces: as many as reported; the library's own result on the same input and defaults
+    // says which input point each vertex stands for, and the written positions are those points
+    // bit for bit.
+    std::size_t vertices = 0;
+    std::vector<Triangle> faces;
+    ASSERT_TRUE(read_ply_faces(slurp(path("out.ply")), vertices, faces));
+    EXPECT_EQ(faces.size(), mesh.at("faces").get<std::size_t>());
+    EXPECT_GT(faces.size(), out.size());
+    ReconstructionReport library_report;
+    const Reconstruction expected = reconstruct_rsr(input, RsrOptions{}, {}, library_report);
+    ASSERT_EQ(expected.vertex_input_index.size(), out.size());
+    EXPECT_EQ(faces, expected.triangles);
+    std::size_t moved = 0;
+    for (std::size_t v = 0; v < out.size(); ++v)
+        if (!same_bits(out.positions[v], input.positions[expected.vertex_input_index[v]])) ++moved;
+    EXPECT_EQ(moved, 0u);
+    EXPECT_EQ(ratio, library_report.vertex_reference_ratio);
+}
+
+TEST_F(CliReconstruct, InvalidHandlesIsAUsageError) {
+    const Outcome r = hrsr("reconstruct " + std::string(HRSR_SAMPLE) + " --method rsr -o " +
+                           path("out.ply") + " --report " + path("r.json") + " --handles -2");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("handles"), std::string::npos) << r.err;
+    EXPECT_EQ(folder_.entries(), std::vector<std::string>{});
+}
+
+TEST_F(CliReconstruct, UnknownMethodIsAUsageError) {
+    const Outcome r = hrsr("reconstruct " + std::string(HRSR_SAMPLE) + " -o " + path("out.ply") +
+                           " --method foo");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("method"), std::string::npos) << r.err;
+    EXPECT_EQ(folder_.entries(), std::vector<std::string>{});
+}
+
+TEST_F(CliReconstruct, SameBytesForOneAndTwoThreads) {
+    for (const char* threads : {"1", "2"}) {
+        const Outcome r = hrsr("reconstruct " + std::string(HRSR_SAMPLE) + " -q --method rsr -o " +
+                               path(std::string("t") + threads + ".ply") + " --threads " + threads);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    const std::string one = slurp(path("t1.ply")), two = slurp(path("t2.ply"));
+    EXPECT_GT(one.size(), 10000u * 24);
+    EXPECT_TRUE(one == two);
+}
+
+} // namespace
+} // namespace hrsr

@@ -1,0 +1,130 @@
+#include "errors.h"
+#include "hrsr/collapse.h"
+#include "samplers.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace hrsr {
+namespace {
+
+CollapsedCloud run(const PointSet& s, double ratio, int threads = 0) {
+    CollapseOptions o;
+    o.collapse_ratio = ratio;
+    Execution exec;
+    exec.threads = threads;
+    return collapse(s.positions, s.normals, o, exec);
+}
+
+// ALGORITHM.md §13 item 7.
+void expect_collapse_invariants(const PointSet& s, const CollapsedCloud& c) {
+    const std::size_t n = s.size();
+    EXPECT_EQ(c.survivors.size() + c.records.size(), n);
+    // Every point is a survivor or the latent of exactly one record; latents never reappear.
+    std::vector<int> role(n, 0);
+    for (std::uint32_t v : c.survivors) ++role[v];
+    for (const CollapseRecord& r : c.records) {
+        ++role[r.latent];
+        EXPECT_LT(r.active, r.latent); // the smaller id survives
+    }
+    for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(role[i], 1) << i;
+    // Replaying the records gives each survivor's tree: its position is the tree's mean and its
+    // weight the tree's size; weights sum to N.
+    std::vector<Vec3> sum(s.positions);
+    std::vector<std::uint32_t> count(n, 1);
+    for (const CollapseRecord& r : c.records) {
+        sum[r.active] += sum[r.latent];
+        count[r.active] += count[r.latent];
+    }
+    std::size_t total = 0;
+    for (std::size_t k = 0; k < c.survivors.size(); ++k) {
+        const std::uint32_t v = c.survivors[k];
+        EXPECT_EQ(c.weights[k], count[v]);
+        total += c.weights[k];
+        EXPECT_LT((c.positions[k] - sum[v] / double(count[v])).Norm(), 1e-12);
+        EXPECT_NEAR(c.normals[k].Norm(), 1.0, 1e-12); // D-9
+    }
+    EXPECT_EQ(total, n);
+}
+
+TEST(Collapse, ReachesTheRatioAndKeepsItsInvariants) {
+    const PointSet s = testing::sample_torus(20000, 1.0, 0.35, testing::Density::Graded);
+    for (double p : {0.5, 0.25, 0.125}) {
+        const CollapsedCloud c = run(s, p);
+        EXPECT_FALSE(c.ran_out_of_edges);
+        EXPECT_EQ(c.survivors.size(), std::size_t(std::llround(20000 * p)));
+        expect_collapse_invariants(s, c);
+    }
+}
+
+TEST(Collapse, RatioOneCollapsesNothing) {
+    const PointSet s = testing::sample_sphere(1000);
+    const CollapsedCloud c = run(s, 1.0);
+    EXPECT_TRUE(c.records.empty());
+    EXPECT_EQ(c.survivors.size(), 1000u);
+    EXPECT_EQ(c.positions, s.positions);
+}
+
+TEST(Collapse, StopsCleanlyWhenNoValidEdgeIsLeft) {
+    // Two opposite-facing points only: the > 90° rule forbids their edge (D-14).
+    PointSet s;
+    s.positions = {{0, 0, 0}, {1, 0, 0}};
+    s.normals = {{0, 0, 1}, {0, 0, -1}};
+    const CollapsedCloud c = run(s, 0.5);
+    EXPECT_TRUE(c.ran_out_of_edges);
+    EXPECT_TRUE(c.records.empty());
+    EXPECT_EQ(c.survivors.size(), 2u);
+}
+
+TEST(Collapse, NeverMergesOppositeNormals) {
+    // Two parallel sheets with opposite normals, closer than their own spacing.
+    PointSet s = testing::sample_plane(30, 1.0, 5);
+    PointSet other = testing::sample_plane(30, 1.0, 6);
+    for (Vec3& p : other.positions) p[2] = 0.3;
+    for (Vec3& n : other.normals) n = -n;
+    testing::append(s, other);
+    const CollapsedCloud c = run(s, 0.25);
+    for (const CollapseRecord& r : c.records) EXPECT_EQ(r.active < 900, r.latent < 900);
+    expect_collapse_invariants(s, c);
+}
+
+TEST(Collapse, TiesAndDuplicatesOfARegularGridAreDeterministic) {
+    const PointSet grid = [] {
+        PointSet g;
+        for (int i = 0; i < 40; ++i)
+            for (int j = 0; j < 40; ++j) {
+                g.positions.emplace_back(i, j, 0);
+                g.normals.emplace_back(0, 0, 1);
+            }
+        return g;
+    }();
+    const CollapsedCloud a = run(grid, 0.125, 1), b = run(grid, 0.125, 2);
+    ASSERT_EQ(a.records.size(), b.records.size());
+    for (std::size_t k = 0; k < a.records.size(); ++k) {
+        EXPECT_EQ(a.records[k].active, b.records[k].active);
+        EXPECT_EQ(a.records[k].latent, b.records[k].latent);
+    }
+    EXPECT_EQ(a.survivors, b.survivors);
+    expect_collapse_invariants(grid, a);
+}
+
+TEST(Collapse, OptionsAreValidatedByName) {
+    const PointSet s = testing::sample_sphere(100);
+    CollapseOptions o;
+    for (double bad : {0.0, -0.5, 1.5, std::nan("")}) {
+        o.collapse_ratio = bad;
+        try {
+            collapse(s.positions, s.normals, o, {});
+            FAIL() << bad;
+        } catch (const InvalidOption& e) {
+            EXPECT_NE(std::string(e.what()).find("collapse-ratio"), std::string::npos);
+        }
+    }
+    o = {};
+    o.collapse_k = 0;
+    EXPECT_THROW(collapse(s.positions, s.normals, o, {}), InvalidOption);
+}
+
+} // namespace
+} // namespace hrsr

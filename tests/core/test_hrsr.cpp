@@ -1,0 +1,176 @@
+// HRsR: collapse → RsR → re-expansion (ALGORITHM.md §6–8, §13 items 8–11).
+#include "hrsr/crossings.h"
+#include "reconstruction.h"
+#include "samplers.h"
+#include "vcg_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace hrsr {
+namespace {
+
+// After every split: χ unchanged; (V, E, F) grew by exactly (1, 3, 2) minus the boundary
+// triangles removed for it; genus of the closed mesh unchanged; no crossing left.
+class SplitChecker : public ReexpansionObserver {
+public:
+    explicit SplitChecker(std::size_t full_check_every) : every_(full_check_every) {}
+    void split_done(const reexpand::SplitMesh& mesh, std::uint32_t, std::uint32_t, const Vec3&,
+                    const Vec3&, std::size_t removed, bool unresolved) override {
+        ++splits_;
+        unresolved_ += unresolved ? 1 : 0;
+        removed_ += removed;
+        if (splits_ % every_ != 0) return;
+        const MeshStats s = measure_mesh(mesh.vertex_count(), mesh.triangles());
+        if (have_previous_) {
+            const long splits = long(splits_ - previous_splits_),
+                       gone = long(removed_ - previous_removed_);
+            EXPECT_EQ(long(s.vertices), long(previous_.vertices) + splits);
+            EXPECT_EQ(long(s.edges), long(previous_.edges) + 3 * splits - gone);
+            EXPECT_EQ(long(s.faces), long(previous_.faces) + 2 * splits - gone);
+            EXPECT_EQ(s.euler(), previous_.euler());
+        }
+        EXPECT_EQ(s.non_manifold_edges, 0u);
+        EXPECT_EQ(s.non_manifold_vertices, 0u);
+        EXPECT_EQ(s.inconsistently_oriented_edges, 0u);
+        previous_ = s;
+        previous_splits_ = splits_;
+        previous_removed_ = removed_;
+        have_previous_ = true;
+    }
+    std::size_t splits() const { return splits_; }
+    std::size_t unresolved() const { return unresolved_; }
+
+private:
+    std::size_t every_, splits_ = 0, unresolved_ = 0, removed_ = 0;
+    std::size_t previous_splits_ = 0, previous_removed_ = 0;
+    MeshStats previous_;
+    bool have_previous_ = false;
+};
+
+ReconstructionOptions hrsr_options(double p, int n = 50) {
+    ReconstructionOptions o;
+    o.collapse.collapse_ratio = p;
+    o.rsr.max_handle_hops = n;
+    return o;
+}
+
+struct Case {
+    const char* name;
+    PointSet (*cloud)();
+    long genus;
+    int n; ///< handle hops for the coarse cloud (see test_rsr.cpp for how n relates to density)
+};
+
+PointSet sphere() {
+    return testing::sample_sphere(20000, 1.0, Vec3(0, 0, 0), testing::Density::Graded);
+}
+PointSet torus() {
+    return testing::sample_torus(30000);
+}
+PointSet double_torus() {
+    return testing::sample_double_torus(40000);
+}
+
+class HrsrSurface : public ::testing::TestWithParam<std::tuple<Case, double>> {};
+
+TEST_P(HrsrSurface, SameTopologyAsTheSurfaceEverySplitChecked) {
+    const auto& [c, p] = GetParam();
+    const PointSet s = c.cloud();
+    ReconstructionReport report;
+    SplitChecker checker(97);
+    const Reconstruction r =
+        reconstruct_hrsr(s, hrsr_options(p, c.n), {}, report, nullptr, &checker);
+    const MeshStats& m = report.mesh;
+    EXPECT_EQ(m.non_manifold_edges, 0u);
+    EXPECT_EQ(m.non_manifold_vertices, 0u);
+    EXPECT_EQ(m.inconsistently_oriented_edges, 0u);
+    EXPECT_EQ(m.boundary_edges, 0u);
+    ASSERT_EQ(m.components.size(), 1u);
+    EXPECT_EQ(m.components[0].genus(), c.genus);
+    EXPECT_GE(report.vertex_reference_ratio, 0.999);
+    EXPECT_EQ(checker.unresolved(), 0u); // no tangent-plane crossing left after any split
+    // §13 item 9: every record replayed, V = V_RsR + replayed.
+    EXPECT_EQ(report.reexpansion.replayed, report.reexpansion.records);
+    EXPECT_EQ(checker.splits(), report.reexpansion.replayed);
+    EXPECT_EQ(r.vertex_input_index.size(),
+              report.coarse_points + report.reexpansion.replayed + report.vertex_copies);
+    testing::VcgMesh vm;
+    testing::build_vcg_mesh(s, r, vm);
+    EXPECT_EQ(testing::self_intersecting_faces(vm).size(), 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Analytic, HrsrSurface,
+    ::testing::Combine(::testing::Values(Case{"sphere", sphere, 0, 50}, Case{"torus", torus, 1, 20},
+                                         Case{"double_torus", double_torus, 2, 20}),
+                       ::testing::Values(0.5, 0.125)),
+    [](const auto& info) {
+        return std::string(std::get<0>(info.param).name) +
+               (std::get<1>(info.param) > 0.2 ? "_half" : "_eighth");
+    });
+
+TEST(Hrsr, WithoutLMinEveryPointIsAVertexAtItsInputPosition) {
+    const PointSet s = testing::sample_torus(15000, 1.0, 0.35, testing::Density::Graded);
+    ReconstructionReport report;
+    const Reconstruction r = reconstruct_hrsr(s, hrsr_options(0.25, 20), {}, report);
+    std::vector<int> seen(s.size(), 0);
+    for (std::uint32_t i : r.vertex_input_index) ++seen[i];
+    for (std::size_t i = 0; i < s.size(); ++i)
+        EXPECT_EQ(seen[i], 1) << i; // a torus needs no copies
+    EXPECT_EQ(report.merged_points, 0u);
+    EXPECT_EQ(report.vertex_reference_ratio, 1.0);
+}
+
+TEST(Hrsr, VertexCountFallsAsLMinGrows) {
+    const PointSet s = testing::sample_sphere(12000);
+    std::size_t previous = s.size() + 1;
+    for (LMinMode mode : {LMinMode::Stop, LMinMode::Filter}) {
+        previous = s.size() + 1;
+        for (double percent : {0.0, 0.5, 1.0, 2.0, 5.0}) {
+            ReconstructionOptions o = hrsr_options(0.125);
+            o.l_min_percent = percent;
+            o.reexpand.l_min_mode = mode;
+            ReconstructionReport report;
+            const Reconstruction r = reconstruct_hrsr(s, o, {}, report);
+            EXPECT_LE(r.vertex_input_index.size(), previous) << percent;
+            previous = r.vertex_input_index.size();
+            // The output still interpolates input points, manifold and closed.
+            EXPECT_EQ(report.mesh.non_manifold_edges, 0u);
+            EXPECT_EQ(report.mesh.boundary_edges, 0u);
+            EXPECT_EQ(report.referenced_input_points + report.merged_points, s.size());
+        }
+        EXPECT_LT(previous, s.size() / 2);
+    }
+}
+
+TEST(Hrsr, SameMeshForOneAndTwoThreads) {
+    PointSet s = testing::sample_torus(20000, 1.0, 0.3, testing::Density::Graded);
+    testing::append(s, testing::sample_sphere(8000, 0.5, Vec3(4, 0, 0)));
+    auto run = [&](int threads) {
+        Execution exec;
+        exec.threads = threads;
+        ReconstructionReport report;
+        return reconstruct_hrsr(s, hrsr_options(0.25, 20), exec, report);
+    };
+    const Reconstruction a = run(1), b = run(2);
+    EXPECT_EQ(a.vertex_input_index, b.vertex_input_index);
+    EXPECT_EQ(a.triangles, b.triangles);
+    ASSERT_EQ(a.vertex_normals.size(), b.vertex_normals.size());
+    for (std::size_t v = 0; v < a.vertex_normals.size(); ++v)
+        ASSERT_EQ(a.vertex_normals[v], b.vertex_normals[v]);
+}
+
+TEST(Hrsr, RatioOneIsRsrOnTheSameCloud) {
+    const PointSet s = testing::sample_sphere(5000);
+    ReconstructionReport report;
+    const Reconstruction r = reconstruct_hrsr(s, hrsr_options(1.0), {}, report);
+    EXPECT_EQ(report.reexpansion.records, 0u);
+    EXPECT_EQ(report.coarse_points, 5000u);
+    EXPECT_EQ(report.mesh.boundary_edges, 0u);
+    EXPECT_EQ(report.mesh.components.size(), 1u);
+}
+
+} // namespace
+} // namespace hrsr

@@ -1,0 +1,160 @@
+#include "hrsr/split_mesh.h"
+#include "mesh/mesh_stats.h"
+
+#include <vcg/complex/algorithms/clean.h>
+
+#include <gtest/gtest.h>
+
+namespace hrsr::reexpand {
+namespace {
+
+struct Fixture {
+    std::vector<Vec3> positions;
+    std::vector<Triangle> triangles;
+};
+
+Fixture octahedron() {
+    return {
+        {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
+        {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
+}
+
+// Vertex 0 at the centre of six triangles (counter-clockwise seen from +z).
+Fixture hexagon() {
+    Fixture f;
+    f.positions.emplace_back(0, 0, 0);
+    for (int k = 0; k < 6; ++k)
+        f.positions.emplace_back(std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0);
+    for (std::uint32_t k = 0; k < 6; ++k) f.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
+    return f;
+}
+
+struct Counts {
+    std::size_t v, e, f, loops;
+    long euler;
+};
+
+Counts check(const SplitMesh& m) {
+    const std::vector<Triangle> t = m.triangles();
+    const MeshStats s = measure_mesh(m.vertex_count(), t);
+    EXPECT_EQ(s.non_manifold_edges, 0u);
+    EXPECT_EQ(s.non_manifold_vertices, 0u);
+    EXPECT_EQ(s.inconsistently_oriented_edges, 0u);
+    EXPECT_EQ(s.degenerate_faces, 0u);
+    EXPECT_TRUE(vcg::tri::Clean<SMesh>::IsFFAdjacencyConsistent(const_cast<SMesh&>(m.vcg_mesh())));
+    return {s.vertices, s.edges, s.faces, s.boundary_loops, s.euler()};
+}
+
+// Every ordered pair (a, b) of c's neighbours, each on a fresh copy of the mesh.
+void split_every_pair(const Fixture& fixture, std::uint32_t c) {
+    const SplitMesh probe(fixture.positions, fixture.triangles, 64, 64);
+    const Star star = probe.star(c);
+    ASSERT_GE(star.neighbours.size(), 2u);
+    for (std::uint32_t a : star.neighbours)
+        for (std::uint32_t b : star.neighbours) {
+            if (a == b) continue;
+            SplitMesh m(fixture.positions, fixture.triangles, 64, 64);
+            const Counts before = check(m);
+            const std::uint32_t c2 = m.split(c, a, b, m.position(c) + Vec3(0.01, 0.02, 0.03));
+            const Counts after = check(m);
+            EXPECT_EQ(after.v, before.v + 1) << a << " " << b;
+            EXPECT_EQ(after.e, before.e + 3) << a << " " << b;
+            EXPECT_EQ(after.f, before.f + 2) << a << " " << b;
+            EXPECT_EQ(after.euler, before.euler);
+            EXPECT_EQ(after.loops, before.loops);
+            // c' is adjacent to c, a and b; c keeps a and b.
+            const Star s2 = m.star(c2), s1 = m.star(c);
+            for (std::uint32_t x : {c, a, b})
+                EXPECT_NE(std::find(s2.neighbours.begin(), s2.neighbours.end(), x),
+                          s2.neighbours.end());
+            for (std::uint32_t x : {c2, a, b})
+                EXPECT_NE(std::find(s1.neighbours.begin(), s1.neighbours.end(), x),
+                          s1.neighbours.end());
+        }
+}
+
+TEST(SplitMesh, StarIsCounterClockwiseFromTheSmallestNeighbour) {
+    const Fixture h = hexagon();
+    const SplitMesh m(h.positions, h.triangles, 16, 16);
+    const Star s = m.star(0);
+    EXPECT_EQ(s.neighbours, (std::vector<std::uint32_t>{1, 2, 3, 4, 5, 6}));
+    EXPECT_FALSE(s.boundary);
+    // Rim vertex 1 at (1, 0): 2 lies at 120°, 0 at 180°, 6 at 240°; counter-clockwise from the
+    // smallest id: 0, 6, 2, and the boundary gap is the wedge from 6 round to 2.
+    const Star rim = m.star(1);
+    EXPECT_TRUE(rim.boundary);
+    EXPECT_EQ(rim.neighbours, (std::vector<std::uint32_t>{0, 6, 2}));
+    EXPECT_EQ(rim.wedges[1], nullptr);
+}
+
+TEST(SplitMesh, InteriorSplitsPreserveEulerCharacteristic) {
+    split_every_pair(octahedron(), 4);
+}
+
+TEST(SplitMesh, InteriorVertexOfADisc) {
+    split_every_pair(hexagon(), 0);
+}
+
+TEST(SplitMesh, BoundaryVertexInEveryGapPosition) {
+    Fixture h = hexagon();
+    split_every_pair(h, 1);                     // rim vertex: valence 3, one gap
+    h.triangles.erase(h.triangles.begin() + 2); // now the centre is a boundary vertex too
+    split_every_pair(h, 0);
+}
+
+TEST(SplitMesh, CapacityIsNeverExceeded) {
+    const Fixture o = octahedron();
+    SplitMesh m(o.positions, o.triangles, 7, 10);
+    m.split(4, 0, 1, Vec3(0, 0, 0.9));
+    EXPECT_THROW(m.split(5, 0, 1, Vec3(0, 0, -0.9)), std::logic_error);
+}
+
+TEST(SplitMesh, FlipsKeepCountsAndRespectValence) {
+    const Fixture h = hexagon();
+    SplitMesh m(h.positions, h.triangles, 16, 16);
+    // Spoke {0, 1} of the centre: 0 has valence 6, 1 is on the boundary: flippable.
+    SFace* f = nullptr;
+    int z = -1;
+    for (const SFace& face : m.vcg_mesh().face)
+        for (int k = 0; k < 3; ++k)
+            if (m.vertex_of(&face, k) == 0 && m.vertex_of(&face, (k + 1) % 3) == 1) {
+                f = const_cast<SFace*>(&face);
+                z = k;
+            }
+    ASSERT_NE(f, nullptr);
+    ASSERT_TRUE(m.can_flip(f, z));
+    const Counts before = check(m);
+    m.flip(f, z);
+    const Counts after = check(m);
+    EXPECT_EQ(after.e, before.e);
+    EXPECT_EQ(after.f, before.f);
+    // The octahedron's vertices have valence 4: after one flip two have 3, and their spokes
+    // may not be flipped again.
+    const Fixture o = octahedron();
+    SplitMesh oct(o.positions, o.triangles, 16, 16);
+    SFace* g = &const_cast<SMesh&>(oct.vcg_mesh()).face[0];
+    ASSERT_TRUE(oct.can_flip(g, 0));
+    oct.flip(g, 0);
+    check(oct);
+    std::size_t flippable_spokes_of_valence_three = 0;
+    for (const SFace& face : oct.vcg_mesh().face)
+        for (int k = 0; k < 3; ++k)
+            if (oct.star(oct.vertex_of(&face, k)).neighbours.size() == 3 &&
+                oct.can_flip(const_cast<SFace*>(&face), k))
+                ++flippable_spokes_of_valence_three;
+    EXPECT_EQ(flippable_spokes_of_valence_three, 0u);
+}
+
+TEST(SplitMesh, RemovingAFaceOpensTheBoundary) {
+    const Fixture o = octahedron();
+    SplitMesh m(o.positions, o.triangles, 16, 16);
+    m.remove_face(&const_cast<SMesh&>(m.vcg_mesh()).face[0]);
+    const Counts c = check(m);
+    EXPECT_EQ(c.f, 7u);
+    EXPECT_EQ(c.loops, 1u);
+    for (std::uint32_t v = 0; v < 6; ++v) EXPECT_FALSE(m.isolated(v));
+    EXPECT_TRUE(m.star(0).boundary);
+}
+
+} // namespace
+} // namespace hrsr::reexpand

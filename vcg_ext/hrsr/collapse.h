@@ -1,0 +1,35 @@
+// HRsR collapse phase (ALGORITHM.md §6): merge the shortest neighbour edges until a fraction p
+// of the points is left, recording every merge so that it can be replayed as a vertex split.
+#pragma once
+
+#include "options.h"
+#include "parallel.h"
+#include "point_set.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace hrsr {
+
+/// One merge of node `latent` into node `active` (ids are indices of the collapsed-from cloud).
+struct CollapseRecord {
+    std::uint32_t active, latent;
+    Vec3 active_before, latent_before, merged;
+};
+
+struct CollapsedCloud {
+    std::vector<std::uint32_t> survivors; ///< node ids left, increasing
+    std::vector<Vec3> positions;          ///< per survivor: weighted mean of its merged points
+    std::vector<Vec3> normals;            ///< per survivor: unit weighted mean normal (D-9)
+    std::vector<std::uint32_t> weights;   ///< per survivor: number of points merged into it
+    std::vector<CollapseRecord> records;  ///< in the order they happened
+    std::size_t budget = 0;               ///< collapses asked for
+    bool ran_out_of_edges = false;        ///< stopped before the budget: no valid edge left
+};
+
+/// Collapses the cloud (positions: the algorithm's unsmoothed coordinates; normals: unit,
+/// oriented). Deterministic (D-10); the kNN queries run in parallel.
+CollapsedCloud collapse(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+                        const CollapseOptions& options, const Execution& exec);
+
+} // namespace hrsr

@@ -1,0 +1,106 @@
+#include "hrsr/local_flips.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace hrsr::reexpand {
+
+namespace {
+
+using Edge = std::pair<std::uint32_t, std::uint32_t>;
+
+// The face and edge index of {u, w}, found around u; false if it is not an edge any more.
+bool locate(const SplitMesh& m, const Edge& e, SFace*& face, int& z) {
+    for (SFace* f : m.star(e.first).wedges) {
+        if (!f) continue;
+        for (int k = 0; k < 3; ++k)
+            if (m.vertex_of(f, k) == e.first && m.vertex_of(f, (k + 1) % 3) == e.second) {
+                face = f;
+                z = k;
+                return true;
+            }
+    }
+    // The edge may be stored the other way round in the faces around u.
+    for (SFace* f : m.star(e.second).wedges) {
+        if (!f) continue;
+        for (int k = 0; k < 3; ++k)
+            if (m.vertex_of(f, k) == e.second && m.vertex_of(f, (k + 1) % 3) == e.first) {
+                face = f;
+                z = k;
+                return true;
+            }
+    }
+    return false;
+}
+
+double cosine(const Vec3& apex, const Vec3& p, const Vec3& q) {
+    const Vec3 u = p - apex, v = q - apex;
+    const double nu = u.Norm(), nv = v.Norm();
+    return (nu > 0 && nv > 0) ? u.dot(v) / (nu * nv) : 1.0;
+}
+
+// Angles at the edge's endpoints in both triangles, in the cosine domain (no acos).
+bool worth_flipping(const SplitMesh& m, SFace* f, int z, double small_cos) {
+    SFace* g = f->FFp(z);
+    const int w = f->FFi(z);
+    const Vec3 a = m.position(m.vertex_of(f, z)), b = m.position(m.vertex_of(f, (z + 1) % 3));
+    const Vec3 c = m.position(m.vertex_of(f, (z + 2) % 3)),
+               d = m.position(m.vertex_of(g, (w + 2) % 3));
+    const double cosines[4] = {cosine(a, b, c), cosine(b, c, a), cosine(a, d, b), cosine(b, a, d)};
+    bool small = false;
+    for (double k : cosines) {
+        if (k < 0) return false; // an angle over 90°
+        small = small || k > small_cos;
+    }
+    return small;
+}
+
+void pass(SplitMesh& m, std::vector<Edge>& edges, double small_cos, std::size_t& flips) {
+    auto length = [&](const Edge& e) {
+        return (m.position(e.first) - m.position(e.second)).Norm();
+    };
+    std::stable_sort(edges.begin(), edges.end(),
+                     [&](const Edge& x, const Edge& y) { return length(x) < length(y); });
+    for (auto it = edges.rbegin(); it != edges.rend(); ++it) {
+        SFace* f = nullptr;
+        int z = -1;
+        if (!locate(m, *it, f, z) || !m.can_flip(f, z) || !worth_flipping(m, f, z, small_cos))
+            continue;
+        SFace* g = f->FFp(z);
+        const Edge diagonal{m.vertex_of(f, (z + 2) % 3), m.vertex_of(g, (f->FFi(z) + 2) % 3)};
+        m.flip(f, z);
+        *it = diagonal; // the edge keeps its identity, with new endpoints
+        ++flips;
+    }
+}
+
+} // namespace
+
+std::size_t improve_around(SplitMesh& m, std::uint32_t v, const ReexpandOptions& o) {
+    std::vector<Edge> one_ring, circle, two_ring;
+    const Star s = m.star(v);
+    const std::size_t d = s.neighbours.size();
+    for (std::size_t k = 0; k < d; ++k) {
+        one_ring.emplace_back(v, s.neighbours[k]);
+        SFace* f = s.wedges[k];
+        if (!f) continue;
+        const Edge link{s.neighbours[k], s.neighbours[(k + 1) % d]};
+        circle.push_back(link);
+        SFace* face = nullptr;
+        int z = -1;
+        if (!locate(m, link, face, z) || face->FFp(z) == face) continue;
+        SFace* far = face->FFp(z);
+        const int w = face->FFi(z);
+        two_ring.emplace_back(m.vertex_of(far, (w + 1) % 3), m.vertex_of(far, (w + 2) % 3));
+        two_ring.emplace_back(m.vertex_of(far, (w + 2) % 3), m.vertex_of(far, w));
+    }
+    const double small_cos = std::cos(o.refinement_angle_degrees * M_PI / 180.0);
+    std::size_t flips = 0;
+    for (int iteration = 0; iteration < o.refinement_iterations; ++iteration)
+        for (std::vector<Edge>* list : {&one_ring, &circle, &two_ring})
+            pass(m, *list, small_cos, flips);
+    return flips;
+}
+
+} // namespace hrsr::reexpand

@@ -1,0 +1,140 @@
+#include "hrsr/reexpansion.h"
+
+#include "hrsr/crossings.h"
+#include "hrsr/local_flips.h"
+#include "hrsr/split_choice.h"
+#include "hrsr/split_mesh.h"
+
+#include <algorithm>
+
+namespace hrsr {
+
+using namespace reexpand;
+
+namespace {
+
+class Replayer {
+public:
+    Replayer(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+             const std::vector<std::uint32_t>& coarse_vertex_node,
+             const std::vector<Vec3>& coarse_positions,
+             const std::vector<Triangle>& coarse_triangles, std::size_t records,
+             const ReexpandOptions& options, ReexpansionObserver* observer)
+        : points_(points), normals_(normals), options_(options), observer_(observer),
+          mesh_(coarse_positions, coarse_triangles, coarse_positions.size() + records,
+                coarse_triangles.size() + 2 * records),
+          vertices_of_(points.size()), vertex_node_(coarse_vertex_node) {
+        for (std::uint32_t v = 0; v < coarse_vertex_node.size(); ++v)
+            vertices_of_[coarse_vertex_node[v]].push_back(v);
+        alias_.assign(points.size(), ReexpandedMesh::kNoNode);
+        for (std::uint32_t node : coarse_vertex_node) alias_[node] = node;
+    }
+
+    // Aliasing (D-16): b is represented by a's vertices from now on.
+    void alias(const CollapseRecord& r) {
+        vertices_of_[r.latent] = vertices_of_[r.active];
+        alias_[r.latent] = alias_[r.active];
+    }
+
+    void replay(const CollapseRecord& r, ReexpansionStats& stats) {
+        const std::vector<std::uint32_t> candidates = vertices_of_[r.active];
+        if (candidates.empty()) { // the node never reached the mesh: its subtree is dropped
+            ++stats.skipped_no_vertex;
+            return;
+        }
+        bool unresolved = false;
+        const std::size_t removed_before = stats.triangles_removed;
+        for (std::uint32_t c : candidates) {
+            if (mesh_.isolated(c)) continue;
+            const CrossingStats cs =
+                resolve_crossings(mesh_, c, r.active_before, r.latent_before, normals_[r.active]);
+            stats.crossing_flips += cs.flips;
+            stats.triangles_removed += cs.triangles_removed;
+            unresolved = unresolved || cs.unresolved > 0 || cs.round_limit;
+            mesh_.move(c, r.active_before);
+        }
+        if (unresolved && options_.strict_crossings) {
+            ++stats.failed_crossings;
+            alias(r);
+            return;
+        }
+        for (std::uint32_t c : candidates) { // the first copy (in id order) with a valid pair
+            if (mesh_.isolated(c)) continue;
+            const SplitChoice choice =
+                choose_split(mesh_, c, r.active_before, r.latent_before, options_);
+            if (!choice.found) continue;
+            const std::uint32_t c2 = mesh_.split(c, choice.a, choice.b, r.latent_before);
+            vertex_node_.push_back(r.latent);
+            vertices_of_[r.latent] = {c2};
+            alias_[r.latent] = r.latent;
+            ++stats.replayed;
+            if (unresolved) ++stats.unresolved_crossings;
+            stats.improvement_flips += improve_around(mesh_, c2, options_);
+            if (observer_)
+                observer_->split_done(mesh_, c, c2, r.active_before, r.latent_before,
+                                      stats.triangles_removed - removed_before, unresolved);
+            return;
+        }
+        ++stats.failed_no_pair;
+        alias(r);
+    }
+
+    // Every vertex at its own node's input point (the last move of a node restores it anyway
+    // when every record was replayed; after a stop this is the snap-to-input of §8.1).
+    void snap_to_input() {
+        for (std::uint32_t v = 0; v < vertex_node_.size(); ++v)
+            mesh_.move(v, points_[vertex_node_[v]]);
+    }
+
+    ReexpandedMesh result() const { return {vertex_node_, mesh_.triangles(), alias_}; }
+
+private:
+    const std::vector<Vec3>& points_;
+    const std::vector<Vec3>& normals_;
+    const ReexpandOptions& options_;
+    ReexpansionObserver* observer_;
+    SplitMesh mesh_;
+    std::vector<std::vector<std::uint32_t>> vertices_of_; ///< per node: its mesh vertices (D-16)
+    std::vector<std::uint32_t> vertex_node_;
+    std::vector<std::uint32_t> alias_;
+};
+
+} // namespace
+
+ReexpandedMesh replay_collapses(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                const std::vector<std::uint32_t>& coarse_vertex_node,
+                                const std::vector<Vec3>& coarse_positions,
+                                const std::vector<Triangle>& coarse_triangles,
+                                const std::vector<CollapseRecord>& records,
+                                const ReexpandOptions& options, double l_min, const Execution& exec,
+                                ReexpansionStats& stats, ReexpansionObserver* observer) {
+    validate(options);
+    stats.records = records.size();
+    Replayer replayer(points, normals, coarse_vertex_node, coarse_positions, coarse_triangles,
+                      records.size(), options, observer);
+    if (exec.progress) exec.progress->begin("re-expansion");
+    for (std::size_t k = records.size(); k-- > 0;) {
+        const CollapseRecord& r = records[k];
+        if (exec.progress && (k & 0x3fff) == 0)
+            exec.progress->update(double(records.size() - k) / double(records.size()));
+        if (l_min > 0 && (r.active_before - r.latent_before).Norm() < l_min) {
+            if (options.l_min_mode == LMinMode::Stop) {
+                stats.stopped_at_l_min = true;
+                // Everything not yet replayed stays merged into its surviving node.
+                for (std::size_t rest = k + 1; rest-- > 0;) {
+                    replayer.alias(records[rest]);
+                    ++stats.merged_by_l_min;
+                }
+                break;
+            }
+            replayer.alias(r);
+            ++stats.merged_by_l_min;
+            continue;
+        }
+        replayer.replay(r, stats);
+    }
+    if (options.snap_to_input || !stats.stopped_at_l_min) replayer.snap_to_input();
+    return replayer.result();
+}
+
+} // namespace hrsr

@@ -1,0 +1,58 @@
+// HRsR re-expansion (ALGORITHM.md §8): the collapses replayed backwards as vertex splits.
+#pragma once
+
+#include "hrsr/collapse.h"
+#include "hrsr/split_mesh.h"
+#include "mesh/triangle_mesh.h"
+#include "options.h"
+#include "parallel.h"
+
+#include <vector>
+
+namespace hrsr {
+
+struct ReexpansionStats {
+    std::size_t records = 0;           ///< collapse records available
+    std::size_t replayed = 0;          ///< splits performed
+    std::size_t skipped_no_vertex = 0; ///< node never reached the mesh: its latent point is dropped
+    std::size_t failed_no_pair = 0;    ///< no split pair: latent aliased to the kept vertex (D-16)
+    std::size_t failed_crossings = 0;  ///< strict mode: unresolved crossing, latent aliased
+    std::size_t unresolved_crossings = 0; ///< splits done with a crossing left (non-strict)
+    std::size_t crossing_flips = 0, triangles_removed = 0, improvement_flips = 0;
+    std::size_t merged_by_l_min = 0; ///< latent points aliased because of l_min
+    bool stopped_at_l_min = false;
+};
+
+struct ReexpandedMesh {
+    std::vector<std::uint32_t> vertex_node; ///< per vertex: the node (point) it stands for
+    std::vector<Triangle> triangles;
+    std::vector<std::uint32_t> alias; ///< per node: the node whose vertex represents it
+                                      ///< (itself if it has its own vertex; kNoNode if dropped)
+    static constexpr std::uint32_t kNoNode = 0xffffffffu;
+};
+
+/// Watches re-expansion (tests check invariants after every split without debug flags).
+class ReexpansionObserver {
+public:
+    virtual ~ReexpansionObserver() = default;
+    /// c was made room for (crossings resolved: `unresolved` left) and moved to x_a; the split
+    /// created c2 at x_b. `removed` boundary triangles were removed for it (each changes
+    /// (V, E, F) by (0, −1, −1)); the local flips have run.
+    virtual void split_done(const reexpand::SplitMesh& /*mesh*/, std::uint32_t /*c*/,
+                            std::uint32_t /*c2*/, const Vec3& /*x_a*/, const Vec3& /*x_b*/,
+                            std::size_t /*removed*/, bool /*unresolved*/) {}
+};
+
+/// Replays `records` backwards on the coarse mesh. `coarse_vertex_node[v]` is the node of each
+/// coarse mesh vertex (copies of a non-manifold node share it). `points` and `normals` are the
+/// original positions and normals of all nodes (the algorithm's coordinates). `l_min` is in
+/// those coordinates.
+ReexpandedMesh replay_collapses(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                const std::vector<std::uint32_t>& coarse_vertex_node,
+                                const std::vector<Vec3>& coarse_positions,
+                                const std::vector<Triangle>& coarse_triangles,
+                                const std::vector<CollapseRecord>& records,
+                                const ReexpandOptions& options, double l_min, const Execution& exec,
+                                ReexpansionStats& stats, ReexpansionObserver* observer = nullptr);
+
+} // namespace hrsr

@@ -1,0 +1,101 @@
+#include "hrsr/split_choice.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hrsr::reexpand {
+
+namespace {
+
+struct Tri {
+    Vec3 p[3];
+    Vec3 normal() const {
+        const Vec3 n = (p[1] - p[0]) ^ (p[2] - p[0]);
+        const double length = n.Norm();
+        return length > 0 ? n / length : Vec3(0, 0, 0); // degenerate: zero normal, no NaN
+    }
+};
+
+// f(t) of E_A: the penalty below the threshold, else w · shortest edge · |π/3 − smallest angle|.
+double angle_term(const Tri& t, const ReexpandOptions& o) {
+    double min_angle = M_PI, min_edge = 1e300;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 u = t.p[(k + 1) % 3] - t.p[k], v = t.p[(k + 2) % 3] - t.p[k];
+        const double nu = u.Norm(), nv = v.Norm();
+        min_edge = std::min(min_edge, nu);
+        const double angle =
+            (nu > 0 && nv > 0) ? std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0)) : 0.0;
+        min_angle = std::min(min_angle, angle); // D-18: the true smallest angle
+    }
+    if (min_angle < o.min_angle_threshold_degrees * M_PI / 180.0) return o.min_angle_penalty;
+    return o.min_angle_weight * min_edge * std::abs(M_PI / 3.0 - min_angle);
+}
+
+struct Score {
+    double energy = 0;
+    double worst_dihedral = 0; ///< max of 1 − n_t · n_t' over adjacent pairs
+};
+
+// Chains of triangles around the two split vertices; consecutive ones share a spoke.
+Score score(const std::vector<Vec3>& q, const std::vector<SFace*>& wedges, std::size_t i,
+            std::size_t j, const Vec3& p_old, const Vec3& p_new, const ReexpandOptions& o) {
+    const std::size_t d = q.size();
+    Score s;
+    auto pair = [&](const Tri& t, const Tri& u, const Vec3& e0, const Vec3& e1) {
+        const double c = t.normal().dot(u.normal());
+        const double length = std::max((e1 - e0).Norm(), 1e-8); // D-2 units
+        s.energy += (c - 1) * (c - 1) * length;
+        s.worst_dihedral = std::max(s.worst_dihedral, 1 - c);
+    };
+    const Tri t_out{{p_new, p_old, q[j]}}, t_in{{p_old, p_new, q[i]}};
+    const bool with_angles = o.min_angle_weight > 0;
+    if (with_angles) s.energy += angle_term(t_out, o) + angle_term(t_in, o);
+    pair(t_in, t_out, p_old, p_new); // D-18: the true shared edge
+    // side(centre, from, to): the wedges from spoke `from` counter-clockwise to spoke `to`.
+    auto side = [&](const Vec3& centre, std::size_t from, std::size_t to, const Tri& first,
+                    const Tri& last) {
+        Tri previous = first;
+        bool have_previous = true;
+        for (std::size_t w = from; w != to; w = (w + 1) % d) {
+            if (!wedges[w]) { // the boundary gap: no face, no adjacency across it (D-18)
+                have_previous = false;
+                continue;
+            }
+            const Tri current{{centre, q[w], q[(w + 1) % d]}};
+            if (with_angles) s.energy += angle_term(current, o);
+            if (have_previous) pair(previous, current, centre, q[w]);
+            if ((w + 1) % d == to) pair(current, last, centre, q[to]);
+            previous = current;
+            have_previous = true;
+        }
+    };
+    side(p_new, j, i, t_out, t_in); // new side: b → a
+    side(p_old, i, j, t_in, t_out); // old side: a → b
+    return s;
+}
+
+} // namespace
+
+SplitChoice choose_split(const SplitMesh& mesh, std::uint32_t c, const Vec3& p_old,
+                         const Vec3& p_new, const ReexpandOptions& options) {
+    const Star star = mesh.star(c);
+    const std::size_t d = star.neighbours.size();
+    SplitChoice best, best_guarded;
+    if (d < 2) return best;
+    std::vector<Vec3> q;
+    for (std::uint32_t v : star.neighbours) q.push_back(mesh.position(v));
+    for (std::size_t i = 0; i < d; ++i)
+        for (std::size_t j = 0; j < d; ++j) {
+            if (i == j) continue;
+            const Score s = score(q, star.wedges, i, j, p_old, p_new, options);
+            const SplitChoice candidate{true, star.neighbours[i], star.neighbours[j], s.energy};
+            if (!best.found || s.energy < best.energy) best = candidate;
+            if (s.worst_dihedral < constants::kDihedralGuard &&
+                (!best_guarded.found || s.energy < best_guarded.energy))
+                best_guarded = candidate;
+        }
+    // Dihedral guard: avoid a fold-back when some candidate has none.
+    return best_guarded.found ? best_guarded : best;
+}
+
+} // namespace hrsr::reexpand

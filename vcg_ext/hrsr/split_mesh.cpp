@@ -1,0 +1,199 @@
+#include "hrsr/split_mesh.h"
+
+#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/simplex/face/topology.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace hrsr::reexpand {
+
+namespace {
+
+int corner_of(const SFace* f, const SVertex* v) {
+    for (int k = 0; k < 3; ++k)
+        if (f->cV(k) == v) return k;
+    return -1;
+}
+
+bool is_border(const SFace* f, int z) {
+    return f->cFFp(z) == f;
+}
+
+// Re-attaches FF across edge z of f and edge w of g (g null: border).
+void attach(SFace* f, int z, SFace* g, int w) {
+    if (g == nullptr) {
+        f->FFp(z) = f;
+        f->FFi(z) = char(z);
+        return;
+    }
+    f->FFp(z) = g;
+    f->FFi(z) = char(w);
+    g->FFp(w) = f;
+    g->FFi(w) = char(z);
+}
+
+// Edge index of {u, v} in f (either direction), or -1.
+int edge_of(const SFace* f, const SVertex* u, const SVertex* v) {
+    for (int z = 0; z < 3; ++z)
+        if ((f->cV(z) == u && f->cV((z + 1) % 3) == v) ||
+            (f->cV(z) == v && f->cV((z + 1) % 3) == u))
+            return z;
+    return -1;
+}
+
+} // namespace
+
+SplitMesh::SplitMesh(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
+                     std::size_t vertex_capacity, std::size_t face_capacity) {
+    // Reserved once: Allocator::Add* then never reallocates, so no pointer ever moves.
+    mesh_.vert.reserve(std::max(vertex_capacity, positions.size()));
+    mesh_.face.reserve(std::max(face_capacity, triangles.size()));
+    auto v = vcg::tri::Allocator<SMesh>::AddVertices(mesh_, positions.size());
+    for (const Vec3& p : positions) (v++)->P() = p;
+    auto f = vcg::tri::Allocator<SMesh>::AddFaces(mesh_, triangles.size());
+    for (const Triangle& t : triangles) {
+        for (int k = 0; k < 3; ++k) f->V(k) = &mesh_.vert[t[k]];
+        ++f;
+    }
+    vcg::tri::UpdateTopology<SMesh>::FaceFace(mesh_);
+    face_of_.assign(mesh_.vert.capacity(), nullptr);
+    for (SFace& face : mesh_.face) set_face_of(&face);
+}
+
+void SplitMesh::set_face_of(SFace* f) {
+    for (int k = 0; k < 3; ++k) face_of_[index(f->V(k))] = f;
+}
+
+Star SplitMesh::star(std::uint32_t vi) const {
+    Star s;
+    SFace* start = face_of_[vi];
+    if (start == nullptr) return s;
+    const SVertex* v = &mesh_.vert[vi];
+    // Walk clockwise to the boundary (or all the way round).
+    SFace* f = start;
+    for (std::size_t guard = 0;; ++guard) {
+        const int k = corner_of(f, v);
+        if (is_border(f, k)) {
+            s.boundary = true;
+            break;
+        }
+        SFace* g = f->FFp(k); // across edge (v, V(k+1)): the face clockwise of f
+        if (g == start || guard > mesh_.face.size()) break;
+        f = g;
+    }
+    // Then counter-clockwise, collecting q_k = V(k+1) of each face and the face as wedge k.
+    SFace* first = f;
+    for (std::size_t guard = 0;; ++guard) {
+        const int k = corner_of(f, v);
+        s.neighbours.push_back(index(f->cV((k + 1) % 3)));
+        s.wedges.push_back(f);
+        const int z = (k + 2) % 3; // edge (V(k+2), v)
+        if (is_border(f, z)) {
+            s.neighbours.push_back(index(f->cV(z)));
+            s.wedges.push_back(nullptr); // the gap closes the cycle
+            break;
+        }
+        f = f->FFp(z);
+        if (f == first) break;
+        if (guard > mesh_.face.size())
+            throw std::logic_error("split mesh: a vertex star does not close");
+    }
+    // Start at the smallest neighbour id (D-10).
+    const auto smallest =
+        std::min_element(s.neighbours.begin(), s.neighbours.end()) - s.neighbours.begin();
+    std::rotate(s.neighbours.begin(), s.neighbours.begin() + smallest, s.neighbours.end());
+    std::rotate(s.wedges.begin(), s.wedges.begin() + smallest, s.wedges.end());
+    return s;
+}
+
+std::uint32_t SplitMesh::split(std::uint32_t ci, std::uint32_t ai, std::uint32_t bi,
+                               const Vec3& position) {
+    const Star s = star(ci);
+    const std::size_t d = s.neighbours.size();
+    const std::size_t i =
+        std::find(s.neighbours.begin(), s.neighbours.end(), ai) - s.neighbours.begin();
+    const std::size_t j =
+        std::find(s.neighbours.begin(), s.neighbours.end(), bi) - s.neighbours.begin();
+    if (i == d || j == d || i == j)
+        throw std::logic_error("split mesh: a and b must be distinct neighbours");
+    if (mesh_.vert.size() == mesh_.vert.capacity() || mesh_.face.size() + 2 > mesh_.face.capacity())
+        throw std::logic_error("split mesh: capacity exhausted");
+
+    SVertex* c = &mesh_.vert[ci];
+    auto vn = vcg::tri::Allocator<SMesh>::AddVertices(mesh_, 1);
+    SVertex* c2 = &*vn;
+    c2->P() = position;
+    const std::uint32_t c2i = index(c2);
+    // Faces in the sweep b → a (wedges j … i−1) move to c'. The faces next to the spokes:
+    SFace* keep_b = s.wedges[(j + d - 1) % d]; // wedge before b: stays with c
+    SFace* move_b = s.wedges[j];               // wedge after b: moves
+    SFace* move_a = s.wedges[(i + d - 1) % d]; // wedge before a: moves
+    SFace* keep_a = s.wedges[i];               // wedge after a: stays
+    const int keep_b_edge = keep_b ? edge_of(keep_b, c, &mesh_.vert[bi]) : -1;
+    const int move_b_edge = move_b ? edge_of(move_b, c, &mesh_.vert[bi]) : -1;
+    const int move_a_edge = move_a ? edge_of(move_a, c, &mesh_.vert[ai]) : -1;
+    const int keep_a_edge = keep_a ? edge_of(keep_a, c, &mesh_.vert[ai]) : -1;
+    for (std::size_t w = j; w != i; w = (w + 1) % d)
+        if (SFace* f = s.wedges[w]) f->V(corner_of(f, c)) = c2;
+
+    auto fn = vcg::tri::Allocator<SMesh>::AddFaces(mesh_, 2);
+    SFace* t_out = &*fn;      // (c', c, b)
+    SFace* t_in = &*(fn + 1); // (c, c', a)
+    t_out->V(0) = c2, t_out->V(1) = c, t_out->V(2) = &mesh_.vert[bi];
+    t_in->V(0) = c, t_in->V(1) = c2, t_in->V(2) = &mesh_.vert[ai];
+    attach(t_out, 0, t_in, 0);             // {c', c}
+    attach(t_out, 1, keep_b, keep_b_edge); // {c, b}
+    attach(t_out, 2, move_b, move_b_edge); // {b, c'}
+    attach(t_in, 1, move_a, move_a_edge);  // {c', a}
+    attach(t_in, 2, keep_a, keep_a_edge);  // {a, c}
+    set_face_of(t_out);
+    set_face_of(t_in);
+    return c2i;
+}
+
+std::size_t SplitMesh::valence(std::uint32_t v) const {
+    return star(v).neighbours.size();
+}
+
+bool SplitMesh::can_flip(SFace* f, int z) const {
+    if (is_border(f, z) || !vcg::face::CheckFlipEdge(*f, z)) return false;
+    // An interior endpoint with 3 edges would drop to 2 (ALGORITHM.md §8.6).
+    for (int end = 0; end < 2; ++end) {
+        const std::uint32_t v = vertex_of(f, (z + end) % 3);
+        const Star s = star(v);
+        if (!s.boundary && s.neighbours.size() < 4) return false;
+    }
+    return true;
+}
+
+void SplitMesh::flip(SFace* f, int z) {
+    SFace* g = f->FFp(z);
+    vcg::face::FlipEdge(*f, z);
+    set_face_of(f);
+    set_face_of(g);
+}
+
+void SplitMesh::remove_face(SFace* f) {
+    SFace* across[3];
+    for (int z = 0; z < 3; ++z) across[z] = is_border(f, z) ? nullptr : f->FFp(z);
+    for (int z = 0; z < 3; ++z)
+        if (across[z]) attach(across[z], f->FFi(z), nullptr, 0);
+    // Each corner keeps a face across one of its two edges in f; with neither, it is left
+    // isolated (in a manifold mesh it has no other face).
+    for (int k = 0; k < 3; ++k) {
+        const std::uint32_t v = index(f->V(k));
+        if (face_of_[v] == f) face_of_[v] = across[k] ? across[k] : across[(k + 2) % 3];
+    }
+    vcg::tri::Allocator<SMesh>::DeleteFace(mesh_, *f);
+}
+
+std::vector<Triangle> SplitMesh::triangles() const {
+    std::vector<Triangle> out;
+    out.reserve(std::size_t(mesh_.fn));
+    for (const SFace& f : mesh_.face)
+        if (!f.IsD()) out.push_back({vertex_of(&f, 0), vertex_of(&f, 1), vertex_of(&f, 2)});
+    return out;
+}
+
+} // namespace hrsr::reexpand

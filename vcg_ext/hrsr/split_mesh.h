@@ -1,0 +1,77 @@
+// The mesh re-expansion works on (ALGORITHM.md §8): a vcglib triangle mesh with face-face
+// adjacency, whose capacity is reserved up front so that no vertex split ever reallocates (and
+// no pointer ever moves), with the vertex split of §8.5 and the flips of §8.3/§8.6.
+#pragma once
+
+#include "mesh/triangle_mesh.h"
+#include "point_set.h"
+
+#include <vcg/complex/complex.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace hrsr::reexpand {
+
+class SVertex;
+class SFace;
+struct SUsedTypes : vcg::UsedTypes<vcg::Use<SVertex>::AsVertexType, vcg::Use<SFace>::AsFaceType> {};
+class SVertex : public vcg::Vertex<SUsedTypes, vcg::vertex::Coord3d, vcg::vertex::BitFlags> {};
+class SFace
+    : public vcg::Face<SUsedTypes, vcg::face::VertexRef, vcg::face::FFAdj, vcg::face::BitFlags> {};
+class SMesh : public vcg::tri::TriMesh<std::vector<SVertex>, std::vector<SFace>> {};
+
+/// The counter-clockwise neighbourhood of a vertex: neighbours q_0 … q_{d−1}; wedge k lies
+/// between q_k and q_{k+1} (cyclically) and is a face, or null for the boundary gap.
+struct Star {
+    std::vector<std::uint32_t> neighbours;
+    std::vector<SFace*> wedges;
+    bool boundary = false;
+};
+
+class SplitMesh {
+public:
+    /// A manifold, consistently oriented mesh; room for `vertex_capacity` vertices and
+    /// `face_capacity` faces in total.
+    SplitMesh(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
+              std::size_t vertex_capacity, std::size_t face_capacity);
+    SplitMesh(const SplitMesh&) = delete;
+    SplitMesh& operator=(const SplitMesh&) = delete;
+
+    std::size_t vertex_count() const { return mesh_.vert.size(); }
+    std::size_t face_count() const { return std::size_t(mesh_.fn); }
+    Vec3 position(std::uint32_t v) const { return mesh_.vert[v].P(); }
+    void move(std::uint32_t v, const Vec3& p) { mesh_.vert[v].P() = p; }
+    bool isolated(std::uint32_t v) const { return face_of_[v] == nullptr; }
+
+    /// Neighbours in counter-clockwise order starting at the smallest id (D-10); empty if isolated.
+    Star star(std::uint32_t v) const;
+
+    /// §8.5: splits c; the faces from spoke b counter-clockwise to spoke a go to the new vertex,
+    /// placed at `position`, and triangles (c', c, b), (c, c', a) are added. a ≠ b must be
+    /// neighbours of c. Returns c'. (V, E, F) change by (+1, +3, +2).
+    std::uint32_t split(std::uint32_t c, std::uint32_t a, std::uint32_t b, const Vec3& position);
+
+    /// Whether edge z of f can be flipped: interior, both sides triangles, the new diagonal
+    /// absent, and no interior endpoint of the edge left with fewer than 3 edges.
+    bool can_flip(SFace* f, int z) const;
+    /// Flips edge z of f (can_flip must hold).
+    void flip(SFace* f, int z);
+    /// Removes a face (the boundary then runs along its edges).
+    void remove_face(SFace* f);
+
+    std::uint32_t index(const SVertex* v) const { return std::uint32_t(v - mesh_.vert.data()); }
+    std::uint32_t vertex_of(const SFace* f, int k) const { return index(f->cV(k)); }
+    /// The live triangles, in face order.
+    std::vector<Triangle> triangles() const;
+    const SMesh& vcg_mesh() const { return mesh_; }
+
+private:
+    void set_face_of(SFace* f);
+    std::size_t valence(std::uint32_t v) const;
+
+    SMesh mesh_;
+    std::vector<SFace*> face_of_; ///< per vertex: one incident face (null if isolated)
+};
+
+} // namespace hrsr::reexpand

@@ -1,0 +1,87 @@
+#include "rsr/reconstruct_cloud.h"
+
+#include "rsr/reconstruct_component.h"
+
+#include <algorithm>
+
+namespace hrsr::rsr {
+
+namespace {
+
+// Components this large use every thread inside; smaller ones run side by side.
+constexpr std::size_t kLargeComponent = 20000;
+
+struct ComponentResult {
+    std::vector<std::uint32_t> points; ///< prepared-cloud indices, increasing
+    std::vector<LocalTriangle> triangles;
+    ComponentStats stats;
+};
+
+std::vector<ComponentResult> split_by_component(const PreparedCloud& cloud) {
+    std::vector<ComponentResult> parts(cloud.component_count);
+    for (std::uint32_t i = 0; i < cloud.size(); ++i) parts[cloud.component[i]].points.push_back(i);
+    return parts;
+}
+
+void reconstruct_part(const PreparedCloud& cloud, ComponentResult& part, const RsrOptions& options,
+                      const Execution& exec, Observer* observer) {
+    ComponentCloud local;
+    for (std::uint32_t i : part.points) {
+        local.positions.push_back(cloud.positions[i]);
+        local.smoothed.push_back(cloud.smoothed[i]);
+        local.normals.push_back(cloud.normals[i]);
+    }
+    part.triangles = reconstruct_component(local, options, exec, part.stats, observer);
+}
+
+void reconstruct_parts(const PreparedCloud& cloud, std::vector<ComponentResult>& parts,
+                       const RsrOptions& options, const Execution& exec, Observer* observer) {
+    std::vector<std::size_t> small;
+    for (std::size_t c = 0; c < parts.size(); ++c) {
+        if (observer || parts[c].points.size() >= kLargeComponent)
+            reconstruct_part(cloud, parts[c], options, exec, observer);
+        else
+            small.push_back(c);
+    }
+    if (exec.progress && !small.empty()) exec.progress->begin("small components");
+    const Execution inner{1, nullptr};
+    parallel_for(exec, small.size(), [&](std::size_t s) {
+        reconstruct_part(cloud, parts[small[s]], options, inner, nullptr);
+    });
+}
+
+} // namespace
+
+void add_timings(std::vector<std::pair<std::string, double>>& total,
+                 const std::vector<std::pair<std::string, double>>& more) {
+    for (const auto& [phase, seconds] : more) {
+        auto it = std::find_if(total.begin(), total.end(),
+                               [&](const auto& e) { return e.first == phase; });
+        if (it == total.end())
+            total.emplace_back(phase, seconds);
+        else
+            it->second += seconds;
+    }
+}
+
+CloudMesh reconstruct_cloud(const PreparedCloud& cloud, const RsrOptions& options,
+                            const Execution& exec, Observer* observer) {
+    std::vector<ComponentResult> parts = split_by_component(cloud);
+    reconstruct_parts(cloud, parts, options, exec, observer);
+    CloudMesh mesh;
+    for (const ComponentResult& part : parts) {
+        for (const LocalTriangle& t : part.triangles)
+            mesh.triangles.push_back({part.points[t[0]], part.points[t[1]], part.points[t[2]]});
+        const ComponentStats& s = part.stats;
+        mesh.candidates += s.candidates;
+        mesh.tree_edges += s.tree_edges;
+        mesh.face_split_edges += s.face_split.inserted;
+        mesh.handle_edges += s.handles.edges_inserted;
+        mesh.handles += s.handles.handles;
+        mesh.ear_edges += s.ears.ears;
+        add_timings(mesh.timings, s.timings);
+    }
+    return mesh;
+}
+
+} // namespace hrsr::rsr
