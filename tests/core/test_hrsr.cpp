@@ -106,9 +106,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Combine(::testing::Values(Case{"sphere", sphere, 0, 50}, Case{"torus", torus, 1, 20},
                                          Case{"double_torus", double_torus, 2, 20}),
                        ::testing::Values(0.5, 0.125)),
-    [](const auto& info) {
-        return std::string(std::get<0>(info.param).name) +
-               (std::get<1>(info.param) > 0.2 ? "_half" : "_eighth");
+    [](const auto& test) {
+        return std::string(std::get<0>(test.param).name) +
+               (std::get<1>(test.param) > 0.2 ? "_half" : "_eighth");
     });
 
 TEST(Hrsr, WithoutLMinEveryPointIsAVertexAtItsInputPosition) {

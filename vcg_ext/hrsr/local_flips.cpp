@@ -10,28 +10,9 @@ namespace {
 
 using Edge = std::pair<std::uint32_t, std::uint32_t>;
 
-// The face and edge index of {u, w}, found around u; false if it is not an edge any more.
+// The face and edge index of {u, w} (stored either way round); false if it is not an edge.
 bool locate(const SplitMesh& m, const Edge& e, SFace*& face, int& z) {
-    for (SFace* f : m.star(e.first).wedges) {
-        if (!f) continue;
-        for (int k = 0; k < 3; ++k)
-            if (m.vertex_of(f, k) == e.first && m.vertex_of(f, (k + 1) % 3) == e.second) {
-                face = f;
-                z = k;
-                return true;
-            }
-    }
-    // The edge may be stored the other way round in the faces around u.
-    for (SFace* f : m.star(e.second).wedges) {
-        if (!f) continue;
-        for (int k = 0; k < 3; ++k)
-            if (m.vertex_of(f, k) == e.second && m.vertex_of(f, (k + 1) % 3) == e.first) {
-                face = f;
-                z = k;
-                return true;
-            }
-    }
-    return false;
+    return m.find_edge(e.first, e.second, face, z) || m.find_edge(e.second, e.first, face, z);
 }
 
 double cosine(const Vec3& apex, const Vec3& p, const Vec3& q) {

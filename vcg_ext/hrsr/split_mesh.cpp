@@ -152,17 +152,58 @@ std::uint32_t SplitMesh::split(std::uint32_t ci, std::uint32_t ai, std::uint32_t
     return c2i;
 }
 
-std::size_t SplitMesh::valence(std::uint32_t v) const {
-    return star(v).neighbours.size();
+template <class Visit>
+void SplitMesh::for_each_face(std::uint32_t vi, Visit&& visit) const {
+    SFace* start = face_of_[vi];
+    if (start == nullptr) return;
+    const SVertex* v = &mesh_.vert[vi];
+    // Clockwise to the boundary (or once round), then counter-clockwise from there.
+    SFace* f = start;
+    for (std::size_t guard = 0; guard <= mesh_.face.size(); ++guard) {
+        const int k = corner_of(f, v);
+        if (is_border(f, k) || f->FFp(k) == start) break;
+        f = f->FFp(k);
+    }
+    SFace* first = f;
+    for (std::size_t guard = 0; guard <= mesh_.face.size(); ++guard) {
+        const int k = corner_of(f, v);
+        visit(f, k);
+        const int z = (k + 2) % 3;
+        if (is_border(f, z) || f->FFp(z) == first) return;
+        f = f->FFp(z);
+    }
+    throw std::logic_error("split mesh: a vertex star does not close");
+}
+
+std::size_t SplitMesh::valence(std::uint32_t v, bool& boundary) const {
+    std::size_t faces = 0;
+    boundary = false;
+    for_each_face(v, [&](SFace* f, int k) {
+        ++faces;
+        boundary = boundary || is_border(f, (k + 2) % 3) || is_border(f, k);
+    });
+    return boundary ? faces + 1 : faces;
+}
+
+bool SplitMesh::find_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const {
+    bool found = false;
+    const SVertex* target = &mesh_.vert[w];
+    for_each_face(u, [&](SFace* f, int k) {
+        if (!found && f->cV((k + 1) % 3) == target) {
+            face = f;
+            z = k;
+            found = true;
+        }
+    });
+    return found;
 }
 
 bool SplitMesh::can_flip(SFace* f, int z) const {
     if (is_border(f, z) || !vcg::face::CheckFlipEdge(*f, z)) return false;
     // An interior endpoint with 3 edges would drop to 2 (ALGORITHM.md §8.6).
     for (int end = 0; end < 2; ++end) {
-        const std::uint32_t v = vertex_of(f, (z + end) % 3);
-        const Star s = star(v);
-        if (!s.boundary && s.neighbours.size() < 4) return false;
+        bool boundary = false;
+        if (valence(vertex_of(f, (z + end) % 3), boundary) < 4 && !boundary) return false;
     }
     return true;
 }

@@ -52,6 +52,10 @@ public:
     /// neighbours of c. Returns c'. (V, E, F) change by (+1, +3, +2).
     std::uint32_t split(std::uint32_t c, std::uint32_t a, std::uint32_t b, const Vec3& position);
 
+    /// The face with the directed edge u→w and that edge's index, found around u without
+    /// allocating; false if there is none.
+    bool find_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const;
+
     /// Whether edge z of f can be flipped: interior, both sides triangles, the new diagonal
     /// absent, and no interior endpoint of the edge left with fewer than 3 edges.
     bool can_flip(SFace* f, int z) const;
@@ -68,7 +72,11 @@ public:
 
 private:
     void set_face_of(SFace* f);
-    std::size_t valence(std::uint32_t v) const;
+    /// Number of edges at v and whether it lies on the boundary, by walking its faces.
+    std::size_t valence(std::uint32_t v, bool& boundary) const;
+    /// Calls visit(face, corner) for every face around v (clockwise to the boundary first).
+    template <class Visit>
+    void for_each_face(std::uint32_t v, Visit&& visit) const;
 
     SMesh mesh_;
     std::vector<SFace*> face_of_; ///< per vertex: one incident face (null if isolated)
