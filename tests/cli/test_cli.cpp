@@ -1,4 +1,5 @@
 // End-to-end tests of the hrsr command-line tool: exit codes, messages, outputs.
+#include "cli_runner.h"
 #include "io/ply_writer.h"
 #include "io/point_set_reader.h"
 #include "samplers.h"
@@ -17,32 +18,14 @@ namespace fs = std::filesystem;
 namespace hrsr {
 namespace {
 
-struct Outcome {
-    int exit_code;
-    std::string out;
-    std::string err;
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using testing::lines;
+using testing::Outcome;
+using testing::slurp;
 
 class Cli : public ::testing::Test {
 protected:
     // Runs hrsr with `args` (shell-quoted by the caller where needed), no stdin.
-    Outcome hrsr(const std::string& args) {
-        const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-        const std::string cmd = std::string(HRSR_EXE) + " " + args + " < /dev/null > " +
-                                out.string() + " 2> " + err.string();
-        const int status = std::system(cmd.c_str());
-        Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-        fs::remove(out);
-        fs::remove(err);
-        return r;
-    }
+    Outcome hrsr(const std::string& args) { return testing::run(HRSR_EXE, args, folder_.root()); }
     std::string path(const std::string& name) const { return folder_.path(name); }
     void write(const std::string& name, const std::string& content) {
         folder_.write(name, content);
@@ -53,10 +36,6 @@ protected:
     testing::TempFolder folder_;
     const fs::path& dir_ = folder_.root();
 };
-
-int lines(const std::string& s) {
-    return int(std::count(s.begin(), s.end(), '\n'));
-}
 
 TEST_F(Cli, HelpAndVersion) {
     Outcome r = hrsr("--help");

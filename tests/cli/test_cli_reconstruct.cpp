@@ -1,5 +1,6 @@
 // End-to-end tests of `hrsr reconstruct --method rsr`: exit codes, the written mesh (vertices at
 // the input coordinates, bit-exact; faces), the JSON report and determinism across threads.
+#include "cli_runner.h"
 #include "io/point_set_reader.h"
 #include "reconstruction.h"
 #include "temp_folder.h"
@@ -25,36 +26,14 @@ namespace fs = std::filesystem;
 namespace hrsr {
 namespace {
 
-struct Outcome {
-    int exit_code;
-    std::string out;
-    std::string err;
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-int lines(const std::string& s) {
-    return int(std::count(s.begin(), s.end(), '\n'));
-}
+using testing::lines;
+using testing::Outcome;
+using testing::slurp;
 
 class CliReconstruct : public ::testing::Test {
 protected:
     // Runs hrsr with `args`, no stdin.
-    Outcome hrsr(const std::string& args) {
-        const fs::path out = folder_.root() / "stdout.txt", err = folder_.root() / "stderr.txt";
-        const std::string cmd = std::string(HRSR_EXE) + " " + args + " < /dev/null > " +
-                                out.string() + " 2> " + err.string();
-        const int status = std::system(cmd.c_str());
-        Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-        fs::remove(out);
-        fs::remove(err);
-        return r;
-    }
+    Outcome hrsr(const std::string& args) { return testing::run(HRSR_EXE, args, folder_.root()); }
     std::string path(const std::string& name) const { return folder_.path(name); }
 
     testing::TempFolder folder_;

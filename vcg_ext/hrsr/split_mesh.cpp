@@ -42,7 +42,53 @@ int edge_of(const SFace* f, const SVertex* u, const SVertex* v) {
     return -1;
 }
 
+bool face_consistent(const SFace* f) {
+    if (f->IsD()) return false;
+    for (int z = 0; z < 3; ++z) {
+        const SFace* g = f->cFFp(z);
+        if (g == f) continue;
+        const int w = f->cFFi(z);
+        if (w < 0 || w > 2 || g->IsD() || g->cFFp(w) != f || g->cFFi(w) != z) return false;
+        if (g->cV(w) != f->cV((z + 1) % 3) || g->cV((w + 1) % 3) != f->cV(z)) return false;
+    }
+    return true;
+}
+
 } // namespace
+
+#ifdef HRSR_EXPENSIVE_CHECKS
+#define HRSR_CHECK_AROUND(v, what) check_around(v, what)
+#else
+#define HRSR_CHECK_AROUND(v, what) ((void)(v))
+#endif
+
+void SplitMesh::check_around(std::uint32_t vi, const char* after) const {
+    const SVertex* v = &mesh_.vert[vi];
+    auto fail = [&](const char* why) {
+        throw std::logic_error(std::string("split mesh: inconsistent fan at vertex ") +
+                               std::to_string(vi) + " after " + after + ": " + why);
+    };
+    SFace* start = face_of_[vi];
+    if (!start) return;
+    SFace* f = start;
+    for (std::size_t g = 0; g <= mesh_.face.size(); ++g) {
+        const int k = corner_of(f, v);
+        if (k < 0) fail("a face around it does not hold it");
+        if (!face_consistent(f)) fail("asymmetric face-face adjacency");
+        if (is_border(f, k) || f->FFp(k) == start) break;
+        f = f->FFp(k);
+    }
+    SFace* first = f;
+    for (std::size_t g = 0; g <= mesh_.face.size(); ++g) {
+        const int k = corner_of(f, v);
+        if (k < 0) fail("a face around it does not hold it");
+        if (!face_consistent(f)) fail("asymmetric face-face adjacency");
+        const int z = (k + 2) % 3;
+        if (is_border(f, z) || f->FFp(z) == first) return;
+        f = f->FFp(z);
+    }
+    fail("the fan does not close");
+}
 
 SplitMesh::SplitMesh(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
                      std::size_t vertex_capacity, std::size_t face_capacity) {
@@ -59,6 +105,14 @@ SplitMesh::SplitMesh(const std::vector<Vec3>& positions, const std::vector<Trian
     vcg::tri::UpdateTopology<SMesh>::FaceFace(mesh_);
     face_of_.assign(mesh_.vert.capacity(), nullptr);
     for (SFace& face : mesh_.face) set_face_of(&face);
+    // A wrongly wound or asymmetric input would corrupt every later split: refuse it (O(F)).
+    for (const SFace& face : mesh_.face)
+        if (!face_consistent(&face))
+            throw std::logic_error(
+                "split mesh: the coarse mesh is not a consistently oriented manifold");
+#ifdef HRSR_EXPENSIVE_CHECKS
+    for (std::uint32_t p = 0; p < positions.size(); ++p) check_around(p, "building the mesh");
+#endif
 }
 
 void SplitMesh::set_face_of(SFace* f) {
@@ -149,6 +203,7 @@ std::uint32_t SplitMesh::split(std::uint32_t ci, std::uint32_t ai, std::uint32_t
     attach(t_in, 2, keep_a, keep_a_edge);  // {a, c}
     set_face_of(t_out);
     set_face_of(t_in);
+    for (std::uint32_t x : {ci, c2i, ai, bi}) HRSR_CHECK_AROUND(x, "a split");
     return c2i;
 }
 
@@ -198,8 +253,22 @@ bool SplitMesh::find_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z
     return found;
 }
 
+bool SplitMesh::adjacent(std::uint32_t u, std::uint32_t w) const {
+    bool found = false;
+    const SVertex* target = &mesh_.vert[w];
+    for_each_face(u, [&](SFace* f, int k) {
+        found = found || f->cV((k + 1) % 3) == target || f->cV((k + 2) % 3) == target;
+    });
+    return found;
+}
+
 bool SplitMesh::can_flip(SFace* f, int z) const {
     if (is_border(f, z) || !vcg::face::CheckFlipEdge(*f, z)) return false;
+    // The new diagonal must not exist yet. vcg's CheckFlipEdge looks for it by circulating with
+    // Pos::NextE, which on a boundary vertex bounces at the border and comes back before seeing
+    // the faces on the far side of its start: it can miss the edge (seen on the bunny scans).
+    if (adjacent(vertex_of(f, (z + 2) % 3), vertex_of(f->FFp(z), (f->FFi(z) + 2) % 3)))
+        return false;
     // An interior endpoint with 3 edges would drop to 2 (ALGORITHM.md §8.6).
     for (int end = 0; end < 2; ++end) {
         bool boundary = false;
@@ -213,6 +282,10 @@ void SplitMesh::flip(SFace* f, int z) {
     vcg::face::FlipEdge(*f, z);
     set_face_of(f);
     set_face_of(g);
+    for (int k = 0; k < 3; ++k) {
+        HRSR_CHECK_AROUND(vertex_of(f, k), "a flip");
+        HRSR_CHECK_AROUND(vertex_of(g, k), "a flip");
+    }
 }
 
 void SplitMesh::remove_face(SFace* f) {
@@ -227,6 +300,7 @@ void SplitMesh::remove_face(SFace* f) {
         if (face_of_[v] == f) face_of_[v] = across[k] ? across[k] : across[(k + 2) % 3];
     }
     vcg::tri::Allocator<SMesh>::DeleteFace(mesh_, *f);
+    for (int k = 0; k < 3; ++k) HRSR_CHECK_AROUND(index(f->V(k)), "a face removal");
 }
 
 std::vector<Triangle> SplitMesh::triangles() const {

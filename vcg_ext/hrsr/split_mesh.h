@@ -52,6 +52,9 @@ public:
     /// neighbours of c. Returns c'. (V, E, F) change by (+1, +3, +2).
     std::uint32_t split(std::uint32_t c, std::uint32_t a, std::uint32_t b, const Vec3& position);
 
+    /// Whether u and w share an edge (a boundary-safe walk around u).
+    bool adjacent(std::uint32_t u, std::uint32_t w) const;
+
     /// The face with the directed edge u→w and that edge's index, found around u without
     /// allocating; false if there is none.
     bool find_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const;
@@ -63,6 +66,11 @@ public:
     void flip(SFace* f, int z);
     /// Removes a face (the boundary then runs along its edges).
     void remove_face(SFace* f);
+
+    /// Throws std::logic_error if the faces around v are not a consistent fan (FF symmetric,
+    /// every face holding v, no deleted face). Called after every change when the library is
+    /// built with HRSR_EXPENSIVE_CHECKS.
+    void check_around(std::uint32_t v, const char* after) const;
 
     std::uint32_t index(const SVertex* v) const { return std::uint32_t(v - mesh_.vert.data()); }
     std::uint32_t vertex_of(const SFace* f, int k) const { return index(f->cV(k)); }

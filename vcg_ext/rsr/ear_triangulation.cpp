@@ -97,9 +97,14 @@ private:
             if (triangles_on_edge(rs_, x, e.u) >= 2 || triangles_on_edge(rs_, x, e.w) >= 2 ||
                 triangles_on_edge(rs_, e.u, e.w) >= 2)
                 continue;
-            const std::uint32_t wu = rs_.find(e.w, e.u), ux = rs_.find(e.u, x);
+            // (x, w, u) is a face when each corner follows on: succ_w(u) = x, succ_u(x) = w and
+            // succ_x(w) = u. The spec names the first two; without the third a 3-cycle that is
+            // not a face was recorded (one wrongly wound triangle in the coarse bunny at p = 0.5).
+            const std::uint32_t wu = rs_.find(e.w, e.u), ux = rs_.find(e.u, x),
+                                xw = rs_.find(x, e.w);
             if (rs_.dart(e.w, rs_.next(e.w, wu)).to != x ||
-                rs_.dart(e.u, rs_.next(e.u, ux)).to != e.w)
+                rs_.dart(e.u, rs_.next(e.u, ux)).to != e.w ||
+                rs_.dart(x, rs_.next(x, xw)).to != e.u)
                 continue;
             record(x, e.w, e.u);
             ++stats.closing_triangles;
