@@ -1,0 +1,27 @@
+// The few MeshLab plugin-API differences between versions (../shared/docs/MESHLAB.md §5).
+// Only 2020.09 (Debian bookworm) is built and run here; 2022.02+ compiles through the same names.
+#pragma once
+
+#if HRSR_ML_API >= 2022
+#include <common/mlexception.h>
+#include <common/plugins/interfaces/filter_plugin.h>
+using MLFilterBase = FilterPlugin;
+#else
+#include <common/interfaces.h>
+#include <common/mlexception.h>
+using MLFilterBase = MeshFilterInterface;
+#endif
+
+#if HRSR_ML_API >= 2023
+using MLRichAbsPerc = RichPercentage;
+#else
+using MLRichAbsPerc = RichAbsPerc;
+#endif
+
+inline void ml_update_box_and_normals(MeshModel& m) {
+#if HRSR_ML_API >= 2022
+    m.updateBoxAndNormals();
+#else
+    m.UpdateBoxAndNormals();
+#endif
+}
