@@ -36,41 +36,58 @@ struct Score {
     double worst_dihedral = 0; ///< max of 1 − n_t · n_t' over adjacent pairs
 };
 
+// The wedge triangles (centre, q_k, q_k+1) of one side do not depend on the pair being scored:
+// their normals and min-angle terms are computed once per split, not once per pair.
+struct Fan {
+    std::vector<Vec3> normal;
+    std::vector<double> angle;
+    Fan(const Vec3& centre, const std::vector<Vec3>& q, const std::vector<SFace*>& wedges,
+        const ReexpandOptions& o) {
+        const std::size_t d = q.size();
+        for (std::size_t w = 0; w < d; ++w) {
+            const Tri t{{centre, q[w], q[(w + 1) % d]}};
+            normal.push_back(wedges[w] ? t.normal() : Vec3(0, 0, 0));
+            angle.push_back(wedges[w] && o.min_angle_weight > 0 ? angle_term(t, o) : 0.0);
+        }
+    }
+};
+
 // Chains of triangles around the two split vertices; consecutive ones share a spoke.
-Score score(const std::vector<Vec3>& q, const std::vector<SFace*>& wedges, std::size_t i,
-            std::size_t j, const Vec3& p_old, const Vec3& p_new, const ReexpandOptions& o) {
+Score score(const std::vector<Vec3>& q, const std::vector<SFace*>& wedges, const Fan& new_fan,
+            const Fan& old_fan, std::size_t i, std::size_t j, const Vec3& p_old, const Vec3& p_new,
+            const ReexpandOptions& o) {
     const std::size_t d = q.size();
     Score s;
-    auto pair = [&](const Tri& t, const Tri& u, const Vec3& e0, const Vec3& e1) {
-        const double c = t.normal().dot(u.normal());
+    auto pair = [&](const Vec3& nt, const Vec3& nu, const Vec3& e0, const Vec3& e1) {
+        const double c = nt.dot(nu);
         const double length = std::max((e1 - e0).Norm(), 1e-8); // D-2 units
         s.energy += (c - 1) * (c - 1) * length;
         s.worst_dihedral = std::max(s.worst_dihedral, 1 - c);
     };
     const Tri t_out{{p_new, p_old, q[j]}}, t_in{{p_old, p_new, q[i]}};
+    const Vec3 n_out = t_out.normal(), n_in = t_in.normal();
     const bool with_angles = o.min_angle_weight > 0;
     if (with_angles) s.energy += angle_term(t_out, o) + angle_term(t_in, o);
-    pair(t_in, t_out, p_old, p_new); // D-18: the true shared edge
+    pair(n_in, n_out, p_old, p_new); // D-18: the true shared edge
     // side(centre, from, to): the wedges from spoke `from` counter-clockwise to spoke `to`.
-    auto side = [&](const Vec3& centre, std::size_t from, std::size_t to, const Tri& first,
-                    const Tri& last) {
-        Tri previous = first;
+    auto side = [&](const Fan& fan, const Vec3& centre, std::size_t from, std::size_t to,
+                    const Vec3& first, const Vec3& last) {
+        Vec3 previous = first;
         bool have_previous = true;
         for (std::size_t w = from; w != to; w = (w + 1) % d) {
             if (!wedges[w]) { // the boundary gap: no face, no adjacency across it (D-18)
                 have_previous = false;
                 continue;
             }
-            const Tri current{{centre, q[w], q[(w + 1) % d]}};
-            if (with_angles) s.energy += angle_term(current, o);
-            if (have_previous) pair(previous, current, centre, q[w]);
-            if ((w + 1) % d == to) pair(current, last, centre, q[to]);
-            previous = current;
+            if (with_angles) s.energy += fan.angle[w];
+            if (have_previous) pair(previous, fan.normal[w], centre, q[w]);
+            if ((w + 1) % d == to) pair(fan.normal[w], last, centre, q[to]);
+            previous = fan.normal[w];
             have_previous = true;
         }
     };
-    side(p_new, j, i, t_out, t_in); // new side: b → a
-    side(p_old, i, j, t_in, t_out); // old side: a → b
+    side(new_fan, p_new, j, i, n_out, n_in); // new side: b → a
+    side(old_fan, p_old, i, j, n_in, n_out); // old side: a → b
     return s;
 }
 
@@ -84,10 +101,11 @@ SplitChoice choose_split(const SplitMesh& mesh, std::uint32_t c, const Vec3& p_o
     if (d < 2) return best;
     std::vector<Vec3> q;
     for (std::uint32_t v : star.neighbours) q.push_back(mesh.position(v));
+    const Fan new_fan(p_new, q, star.wedges, options), old_fan(p_old, q, star.wedges, options);
     for (std::size_t i = 0; i < d; ++i)
         for (std::size_t j = 0; j < d; ++j) {
             if (i == j) continue;
-            const Score s = score(q, star.wedges, i, j, p_old, p_new, options);
+            const Score s = score(q, star.wedges, new_fan, old_fan, i, j, p_old, p_new, options);
             const SplitChoice candidate{true, star.neighbours[i], star.neighbours[j], s.energy};
             if (!best.found || s.energy < best.energy) best = candidate;
             if (s.worst_dihedral < constants::kDihedralGuard &&
