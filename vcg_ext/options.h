@@ -149,6 +149,9 @@ inline constexpr std::size_t kMinHandleGroupSize = 5;
 inline constexpr double kCrossingExtension = 1.11;
 inline constexpr int kCrossingRounds = 100;
 inline constexpr double kDihedralGuard = 1.75;
+/// HRsR never collapses below min(N, this) points (D-24): RsR needs points to triangulate, and
+/// 12.5 % of a tiny cloud is a single point (3 points gave an empty mesh).
+inline constexpr std::size_t kMinCoarsePoints = 200;
 } // namespace constants
 
 } // namespace hrsr

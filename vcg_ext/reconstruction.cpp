@@ -103,6 +103,13 @@ Reconstruction make_output(const PreparedCloud& cloud,
     return mesh;
 }
 
+// A mesh without a triangle is a failure to report, not a result to write.
+void require_triangles(const Reconstruction& mesh, const ReconstructionReport& report) {
+    if (!mesh.triangles.empty()) return;
+    throw InvalidInput("no triangle could be built from the " + std::to_string(report.points_used) +
+                       " usable points (too few, or too far apart for k = the neighbourhood size)");
+}
+
 // r_v: input points that are vertices, or exact duplicates of one (D-3). A duplicate of a point
 // that is not a vertex shares that point's outcome (§13 item 10: every point has one).
 void account(const PointSet& input, const Reconstruction& mesh, ReconstructionReport& report) {
@@ -213,6 +220,7 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     Reconstruction mesh =
         make_output(cloud, m.vertex_point, std::move(m.triangles), options.orient_outward, report);
     account(input, mesh, report);
+    require_triangles(mesh, report);
     return mesh;
 }
 
@@ -230,7 +238,12 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     CollapsedCloud collapsed;
     {
         Timer timer(report.timings, "collapse");
-        collapsed = collapse(cloud.positions, cloud.normals, options.collapse, exec);
+        // D-24: never below min(N, 200) points, so tiny clouds still leave RsR something.
+        CollapseOptions collapse_options = options.collapse;
+        const double floor =
+            double(std::min(cloud.size(), constants::kMinCoarsePoints)) / double(cloud.size());
+        collapse_options.collapse_ratio = std::max(collapse_options.collapse_ratio, floor);
+        collapsed = collapse(cloud.positions, cloud.normals, collapse_options, exec);
     }
     report.coarse_points = collapsed.survivors.size();
     std::vector<std::uint32_t> dropped_nodes;
@@ -291,6 +304,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles),
                                       options.rsr.orient_outward, report);
     account(input, mesh, report);
+    require_triangles(mesh, report);
     return mesh;
 }
 

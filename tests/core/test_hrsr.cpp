@@ -1,4 +1,5 @@
 // HRsR: collapse → RsR → re-expansion (ALGORITHM.md §6–8, §13 items 8–11).
+#include "errors.h"
 #include "hrsr/crossings.h"
 #include "reconstruction.h"
 #include "samplers.h"
@@ -160,6 +161,41 @@ TEST(Hrsr, SameMeshForOneAndTwoThreads) {
     ASSERT_EQ(a.vertex_normals.size(), b.vertex_normals.size());
     for (std::size_t v = 0; v < a.vertex_normals.size(); ++v)
         ASSERT_EQ(a.vertex_normals[v], b.vertex_normals[v]);
+}
+
+// D-24 and the no-empty-mesh rule: a tiny cloud still gives a mesh (it is not collapsed to one
+// point), and a cloud no triangle can be built from is an error, never an empty mesh.
+TEST(Hrsr, TinyCloudsGiveAMeshOrAClearError) {
+    // Flat patches of 4, 9 and 49 points, and small spheres (on tinier spheres the neighbours'
+    // normals differ by more than θ and the cloud is rejected with a message, which is fine).
+    std::vector<PointSet> clouds{
+        testing::sample_plane(2), testing::sample_plane(3), testing::sample_plane(7),
+        testing::sample_sphere(50, 1.0, Vec3(0, 0, 0), testing::Density::Uniform, 7),
+        testing::sample_sphere(150, 1.0, Vec3(0, 0, 0), testing::Density::Uniform, 7)};
+    for (const PointSet& s : clouds) {
+        const std::size_t n = s.size();
+        ReconstructionReport report;
+        const Reconstruction r = reconstruct_hrsr(s, hrsr_options(0.125), {}, report);
+        EXPECT_EQ(report.coarse_points, n) << n; // below 200 points nothing is collapsed
+        EXPECT_FALSE(r.triangles.empty()) << n;
+        EXPECT_EQ(report.mesh.non_manifold_edges, 0u);
+    }
+    PointSet line;
+    for (int i = 0; i < 3; ++i) {
+        line.positions.emplace_back(i, 0, 0);
+        line.normals.emplace_back(0, 0, 1);
+    }
+    for (Method method : {Method::Hrsr, Method::Rsr}) {
+        ReconstructionOptions o = hrsr_options(0.125);
+        o.method = method;
+        ReconstructionReport report;
+        try {
+            reconstruct(line, o, {}, report);
+            FAIL() << "expected InvalidInput";
+        } catch (const InvalidInput& e) {
+            EXPECT_NE(std::string(e.what()).find("no triangle"), std::string::npos) << e.what();
+        }
+    }
 }
 
 TEST(Hrsr, RatioOneIsRsrOnTheSameCloud) {
