@@ -170,26 +170,8 @@ PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collaps
     const CsrGraph graph = neighbour_graph(coarse.smoothed, options.k, exec);
     const ComponentSplit split =
         split_components(graph, coarse.positions, coarse.smoothed, coarse.normals, options, exec);
-    PreparedCloud kept;
-    kept.normalisation = coarse.normalisation;
-    kept.component_count = split.count;
-    for (std::size_t i = 0; i < coarse.size(); ++i) {
-        if (split.label[i] == ComponentSplit::kDropped) {
-            dropped.push_back(coarse.input_index[i]);
-            continue;
-        }
-        kept.input_index.push_back(coarse.input_index[i]);
-        kept.positions.push_back(coarse.positions[i]);
-        kept.smoothed.push_back(coarse.smoothed[i]);
-        kept.normals.push_back(coarse.normals[i]);
-        kept.component.push_back(split.label[i]);
-    }
-    report.preprocess.components_kept = split.count;
-    report.preprocess.components_dropped = split.dropped_components;
-    report.preprocess.component_sizes = split.sizes;
-    report.preprocess.cut_length = split.cut_length / cloud.normalisation.scale;
-    report.preprocess.edges_cut = split.edges_cut;
-    return kept;
+    record_split(split, cloud.normalisation, report.preprocess);
+    return keep_components(coarse, split, dropped);
 }
 
 // The coarse survivor at the root of each node's collapse tree.

@@ -153,6 +153,34 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     return cloud;
 }
 
+PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& split,
+                              std::vector<std::uint32_t>& dropped) {
+    PreparedCloud kept;
+    kept.normalisation = cloud.normalisation;
+    kept.component_count = split.count;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        if (split.label[i] == ComponentSplit::kDropped) {
+            dropped.push_back(cloud.input_index[i]);
+            continue;
+        }
+        kept.input_index.push_back(cloud.input_index[i]);
+        kept.positions.push_back(cloud.positions[i]);
+        kept.smoothed.push_back(cloud.smoothed[i]);
+        kept.normals.push_back(cloud.normals[i]);
+        kept.component.push_back(split.label[i]);
+    }
+    return kept;
+}
+
+void record_split(const ComponentSplit& split, const Normalisation& normalisation,
+                  PreprocessReport& report) {
+    report.cut_length = split.cut_length / normalisation.scale;
+    report.edges_cut = split.edges_cut;
+    report.components_kept = split.count;
+    report.components_dropped = split.dropped_components;
+    report.component_sizes = split.sizes;
+}
+
 PreparedCloud preprocess(const PointSet& input, const PreprocessOptions& options,
                          const Execution& exec, PreprocessReport& report) {
     CsrGraph graph;
@@ -164,26 +192,10 @@ PreparedCloud preprocess(const PointSet& input, const PreprocessOptions& options
             split_components(graph, cloud.positions, cloud.smoothed, cloud.normals, options, exec);
     }
     graph = CsrGraph();
-    report.cut_length = split.cut_length / cloud.normalisation.scale;
-    report.edges_cut = split.edges_cut;
-    report.components_kept = split.count;
-    report.components_dropped = split.dropped_components;
-    report.component_sizes = split.sizes;
-
-    PreparedCloud kept;
-    kept.normalisation = cloud.normalisation;
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
-        if (split.label[i] == ComponentSplit::kDropped) {
-            report.fate[cloud.input_index[i]] = PointFate::SmallComponent;
-            continue;
-        }
-        kept.input_index.push_back(cloud.input_index[i]);
-        kept.positions.push_back(cloud.positions[i]);
-        kept.smoothed.push_back(cloud.smoothed[i]);
-        kept.normals.push_back(cloud.normals[i]);
-        kept.component.push_back(split.label[i]);
-    }
-    kept.component_count = split.count;
+    record_split(split, cloud.normalisation, report);
+    std::vector<std::uint32_t> dropped;
+    PreparedCloud kept = keep_components(cloud, split, dropped);
+    for (std::uint32_t i : dropped) report.fate[i] = PointFate::SmallComponent;
     propagate_fates_to_duplicates(report);
     if (split.dropped_components > 0)
         report.warnings.push_back(

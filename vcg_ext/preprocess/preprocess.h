@@ -6,6 +6,7 @@
 #include "options.h"
 #include "parallel.h"
 #include "point_set.h"
+#include "preprocess/components.h"
 #include "preprocess/report.h"
 #include "preprocess/sanitize.h"
 
@@ -55,5 +56,14 @@ CsrGraph neighbour_graph(const std::vector<Vec3>& positions, int k, const Execut
 /// only the points of kept components; every other input point has its fate in the report.
 PreparedCloud preprocess(const PointSet& input, const PreprocessOptions& options,
                          const Execution& exec, PreprocessReport& report);
+
+/// The points of `cloud` in kept components, labelled with their component, in the same order;
+/// `dropped` receives the input_index of every other point.
+PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& split,
+                              std::vector<std::uint32_t>& dropped);
+
+/// Copies the split's numbers into the report (the cut length in input units).
+void record_split(const ComponentSplit& split, const Normalisation& normalisation,
+                  PreprocessReport& report);
 
 } // namespace hrsr
