@@ -50,4 +50,9 @@ void check_output_is_not_input(const std::string& input, const std::string& outp
         throw UsageError("the output " + output + " is the input file; refusing to overwrite it");
 }
 
+void check_outputs(const std::string& input, const std::string& output, const std::string& report) {
+    check_output_is_not_input(input, output);
+    if (!report.empty()) check_output_is_not_input(input, report);
+}
+
 } // namespace hrsr::app

@@ -1,6 +1,7 @@
 // Options shared by the subcommands, and file-path checks.
 #pragma once
 
+#include "errors.h"
 #include "options.h"
 
 #include <CLI/CLI.hpp>
@@ -14,5 +15,19 @@ void add_preprocess_options(CLI::App& command, PreprocessOptions& options);
 
 /// Throws UsageError when `output` names the input file (we never overwrite the input).
 void check_output_is_not_input(const std::string& input, const std::string& output);
+
+/// The same for a command's output and (if not empty) its report.
+void check_outputs(const std::string& input, const std::string& output, const std::string& report);
+
+/// Runs `work`; an InvalidInput it throws is rethrown with the input file's name in front, as
+/// every input error names its file.
+template <class Work>
+auto naming_input(const std::string& input, Work&& work) -> decltype(work()) {
+    try {
+        return work();
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(input + ": " + e.what());
+    }
+}
 
 } // namespace hrsr::app

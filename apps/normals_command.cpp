@@ -54,8 +54,7 @@ void print_summary(const NormalsArguments& a, const PreprocessReport& r, std::si
 } // namespace
 
 void run_normals(const NormalsArguments& a) {
-    check_output_is_not_input(a.input, a.output);
-    if (!a.report.empty()) check_output_is_not_input(a.input, a.report);
+    check_outputs(a.input, a.output, a.report);
     validate(a.options);
     const PointSet input = io::read_point_set(a.input);
 
@@ -63,12 +62,8 @@ void run_normals(const NormalsArguments& a) {
     Progress progress(bar.callback());
     Execution exec{a.threads, &progress};
     PreprocessReport report;
-    PreparedCloud cloud;
-    try {
-        cloud = preprocess(input, a.options, exec, report);
-    } catch (const InvalidInput& e) {
-        throw InvalidInput(a.input + ": " + e.what()); // name the file, as every input error does
-    }
+    const PreparedCloud cloud =
+        naming_input(a.input, [&] { return preprocess(input, a.options, exec, report); });
     bar.finish();
 
     // Kept points at their input coordinates (never the normalised or smoothed ones).

@@ -221,8 +221,7 @@ void run_reconstruct(const ReconstructArguments& args) {
     ReconstructArguments a = args;
     a.options.method = a.method == "rsr" ? Method::Rsr : Method::Hrsr;
     parse_l_min(a.l_min, a.options);
-    check_output_is_not_input(a.input, a.output);
-    if (!a.report.empty()) check_output_is_not_input(a.input, a.report);
+    check_outputs(a.input, a.output, a.report);
     validate(a.options);
     const PointSet input = io::read_point_set(a.input);
 
@@ -230,12 +229,8 @@ void run_reconstruct(const ReconstructArguments& args) {
     Progress progress(bar.callback());
     const Execution exec{a.threads, &progress};
     ReconstructionReport report;
-    Reconstruction mesh;
-    try {
-        mesh = reconstruct(input, a.options, exec, report);
-    } catch (const InvalidInput& e) {
-        throw InvalidInput(a.input + ": " + e.what());
-    }
+    const Reconstruction mesh =
+        naming_input(a.input, [&] { return reconstruct(input, a.options, exec, report); });
     bar.finish();
 
     std::vector<Vec3> positions;
