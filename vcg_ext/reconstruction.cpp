@@ -63,14 +63,12 @@ CompactMesh compact(std::size_t points, std::vector<Triangle> triangles) {
     return m;
 }
 
-// D-6: closed components enclosing a negative volume are turned inside out.
-void orient_outward(const std::vector<Vec3>& positions, Reconstruction& mesh,
+// D-6: closed components enclosing a negative volume are turned inside out (which changes none
+// of the measures in `stats`).
+void orient_outward(const std::vector<Vec3>& positions, const MeshStats& stats,
+                    const std::vector<std::uint32_t>& component, Reconstruction& mesh,
                     ReconstructionReport& report) {
-    std::size_t count = 0;
-    const std::vector<std::uint32_t> component =
-        triangle_components(positions.size(), mesh.triangles, count);
-    const MeshStats stats = measure_mesh(positions.size(), mesh.triangles);
-    for (std::uint32_t c = 0; c < count; ++c) {
+    for (std::uint32_t c = 0; c < stats.components.size(); ++c) {
         if (!stats.components[c].closed() ||
             signed_volume(positions, mesh.triangles, component, c) >= 0)
             continue;
@@ -86,7 +84,8 @@ void orient_outward(const std::vector<Vec3>& positions, Reconstruction& mesh,
     }
 }
 
-// The output: vertices at the cloud points they stand for, with their normals.
+// The output: vertices at the cloud points they stand for, with their normals; measured into
+// report.mesh.
 Reconstruction make_output(const PreparedCloud& cloud,
                            const std::vector<std::uint32_t>& vertex_point,
                            std::vector<Triangle> triangles, bool outward,
@@ -99,7 +98,9 @@ Reconstruction make_output(const PreparedCloud& cloud,
         mesh.vertex_normals.push_back(cloud.normals[p]);
         positions.push_back(cloud.positions[p]);
     }
-    if (outward) orient_outward(positions, mesh, report);
+    std::vector<std::uint32_t> component;
+    report.mesh = measure_mesh(positions.size(), mesh.triangles, &component);
+    if (outward) orient_outward(positions, report.mesh, component, mesh, report);
     return mesh;
 }
 
@@ -143,7 +144,6 @@ void account(const PointSet& input, const Reconstruction& mesh, ReconstructionRe
         std::size_t(std::count(outcome.begin(), outcome.end(), kVertex));
     report.vertex_reference_ratio =
         input.size() ? double(report.referenced_input_points) / double(input.size()) : 0;
-    report.mesh = measure_mesh(mesh.vertex_input_index.size(), mesh.triangles);
 }
 
 void take_rsr_stats(const rsr::CloudMesh& m, ReconstructionReport& report) {

@@ -52,8 +52,14 @@ CsrGraph symmetric_union(const CsrGraph& directed, const Execution& exec) {
     return g;
 }
 
-DisjointSets::DisjointSets(std::size_t n) : parent_(n), size_(n, 1) {
+DisjointSets::DisjointSets(std::size_t n) {
+    reset(n);
+}
+
+void DisjointSets::reset(std::size_t n) {
+    parent_.resize(n);
     std::iota(parent_.begin(), parent_.end(), 0u);
+    size_.assign(n, 1);
 }
 
 std::uint32_t DisjointSets::find(std::uint32_t x) {

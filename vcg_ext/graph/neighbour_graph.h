@@ -32,6 +32,8 @@ CsrGraph symmetric_union(const CsrGraph& directed, const Execution& exec);
 class DisjointSets {
 public:
     explicit DisjointSets(std::size_t n);
+    /// n singletons again, keeping the storage (for scratch sets reused in a loop).
+    void reset(std::size_t n);
     std::uint32_t find(std::uint32_t x);
     /// Returns false when a and b were already in the same set.
     bool unite(std::uint32_t a, std::uint32_t b);

@@ -12,7 +12,7 @@ using Edge = std::pair<std::uint32_t, std::uint32_t>;
 
 // The face and edge index of {u, w} (stored either way round); false if it is not an edge.
 bool locate(const SplitMesh& m, const Edge& e, SFace*& face, int& z) {
-    return m.find_edge(e.first, e.second, face, z) || m.find_edge(e.second, e.first, face, z);
+    return m.find_undirected_edge(e.first, e.second, face, z);
 }
 
 double cosine(const Vec3& apex, const Vec3& p, const Vec3& q) {
@@ -46,7 +46,9 @@ void pass(SplitMesh& m, std::vector<Edge>& edges, double small_cos, std::size_t&
     for (auto it = edges.rbegin(); it != edges.rend(); ++it) {
         SFace* f = nullptr;
         int z = -1;
-        if (!locate(m, *it, f, z) || !m.can_flip(f, z) || !worth_flipping(m, f, z, small_cos))
+        // The cheap geometric test before the topological walks of can_flip.
+        if (!locate(m, *it, f, z) || f->FFp(z) == f || !worth_flipping(m, f, z, small_cos) ||
+            !m.can_flip(f, z))
             continue;
         SFace* g = f->FFp(z);
         const Edge diagonal{m.vertex_of(f, (z + 2) % 3), m.vertex_of(g, (f->FFi(z) + 2) % 3)};

@@ -17,16 +17,19 @@ struct Tri {
 };
 
 // f(t) of E_A: the penalty below the threshold, else w · shortest edge · |π/3 − smallest angle|.
+// acos is decreasing, so the smallest angle is the acos of the largest cosine: one acos per
+// triangle instead of three (the profile's top entry), with the very same value.
 double angle_term(const Tri& t, const ReexpandOptions& o) {
-    double min_angle = M_PI, min_edge = 1e300;
+    double max_cos = -1, min_edge = 1e300;
     for (int k = 0; k < 3; ++k) {
         const Vec3 u = t.p[(k + 1) % 3] - t.p[k], v = t.p[(k + 2) % 3] - t.p[k];
         const double nu = u.Norm(), nv = v.Norm();
         min_edge = std::min(min_edge, nu);
-        const double angle =
-            (nu > 0 && nv > 0) ? std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0)) : 0.0;
-        min_angle = std::min(min_angle, angle); // D-18: the true smallest angle
+        // A zero-length side makes the angle 0 (cosine 1). D-18: the true smallest angle.
+        const double c = (nu > 0 && nv > 0) ? std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0) : 1.0;
+        max_cos = std::max(max_cos, c);
     }
+    const double min_angle = std::acos(max_cos);
     if (min_angle < o.min_angle_threshold_degrees * M_PI / 180.0) return o.min_angle_penalty;
     return o.min_angle_weight * min_edge * std::abs(M_PI / 3.0 - min_angle);
 }
@@ -52,10 +55,27 @@ struct Fan {
     }
 };
 
+// The two new triangles (c', c, q_j) and (c, c', q_i) depend on one spoke each: their normals
+// and min-angle terms are computed once per spoke, not once per pair.
+struct NewTriangles {
+    std::vector<Vec3> out_normal, in_normal;
+    std::vector<double> out_angle, in_angle;
+    NewTriangles(const Vec3& p_old, const Vec3& p_new, const std::vector<Vec3>& q,
+                 const ReexpandOptions& o) {
+        for (const Vec3& spoke : q) {
+            const Tri t_out{{p_new, p_old, spoke}}, t_in{{p_old, p_new, spoke}};
+            out_normal.push_back(t_out.normal());
+            in_normal.push_back(t_in.normal());
+            out_angle.push_back(o.min_angle_weight > 0 ? angle_term(t_out, o) : 0.0);
+            in_angle.push_back(o.min_angle_weight > 0 ? angle_term(t_in, o) : 0.0);
+        }
+    }
+};
+
 // Chains of triangles around the two split vertices; consecutive ones share a spoke.
 Score score(const std::vector<Vec3>& q, const std::vector<SFace*>& wedges, const Fan& new_fan,
-            const Fan& old_fan, std::size_t i, std::size_t j, const Vec3& p_old, const Vec3& p_new,
-            const ReexpandOptions& o) {
+            const Fan& old_fan, const NewTriangles& spokes, std::size_t i, std::size_t j,
+            const Vec3& p_old, const Vec3& p_new, const ReexpandOptions& o) {
     const std::size_t d = q.size();
     Score s;
     auto pair = [&](const Vec3& nt, const Vec3& nu, const Vec3& e0, const Vec3& e1) {
@@ -64,10 +84,10 @@ Score score(const std::vector<Vec3>& q, const std::vector<SFace*>& wedges, const
         s.energy += (c - 1) * (c - 1) * length;
         s.worst_dihedral = std::max(s.worst_dihedral, 1 - c);
     };
-    const Tri t_out{{p_new, p_old, q[j]}}, t_in{{p_old, p_new, q[i]}};
-    const Vec3 n_out = t_out.normal(), n_in = t_in.normal();
+    const Vec3& n_out = spokes.out_normal[j];
+    const Vec3& n_in = spokes.in_normal[i];
     const bool with_angles = o.min_angle_weight > 0;
-    if (with_angles) s.energy += angle_term(t_out, o) + angle_term(t_in, o);
+    if (with_angles) s.energy += spokes.out_angle[j] + spokes.in_angle[i];
     pair(n_in, n_out, p_old, p_new); // D-18: the true shared edge
     // side(centre, from, to): the wedges from spoke `from` counter-clockwise to spoke `to`.
     auto side = [&](const Fan& fan, const Vec3& centre, std::size_t from, std::size_t to,
@@ -102,10 +122,12 @@ SplitChoice choose_split(const SplitMesh& mesh, std::uint32_t c, const Vec3& p_o
     std::vector<Vec3> q;
     for (std::uint32_t v : star.neighbours) q.push_back(mesh.position(v));
     const Fan new_fan(p_new, q, star.wedges, options), old_fan(p_old, q, star.wedges, options);
+    const NewTriangles spokes(p_old, p_new, q, options);
     for (std::size_t i = 0; i < d; ++i)
         for (std::size_t j = 0; j < d; ++j) {
             if (i == j) continue;
-            const Score s = score(q, star.wedges, new_fan, old_fan, i, j, p_old, p_new, options);
+            const Score s =
+                score(q, star.wedges, new_fan, old_fan, spokes, i, j, p_old, p_new, options);
             const SplitChoice candidate{true, star.neighbours[i], star.neighbours[j], s.energy};
             if (!best.found || s.energy < best.energy) best = candidate;
             if (s.worst_dihedral < constants::kDihedralGuard &&

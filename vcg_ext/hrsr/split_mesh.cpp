@@ -208,24 +208,27 @@ std::uint32_t SplitMesh::split(std::uint32_t ci, std::uint32_t ai, std::uint32_t
 }
 
 template <class Visit>
-void SplitMesh::for_each_face(std::uint32_t vi, Visit&& visit) const {
+void SplitMesh::for_each_face_any_order(std::uint32_t vi, Visit&& visit) const {
     SFace* start = face_of_[vi];
     if (start == nullptr) return;
     const SVertex* v = &mesh_.vert[vi];
-    // Clockwise to the boundary (or once round), then counter-clockwise from there.
+    // Counter-clockwise from `start`; only if that meets the boundary, clockwise from `start`
+    // for the rest. For interior vertices (almost all) this is one walk instead of two.
     SFace* f = start;
-    for (std::size_t guard = 0; guard <= mesh_.face.size(); ++guard) {
-        const int k = corner_of(f, v);
-        if (is_border(f, k) || f->FFp(k) == start) break;
-        f = f->FFp(k);
-    }
-    SFace* first = f;
     for (std::size_t guard = 0; guard <= mesh_.face.size(); ++guard) {
         const int k = corner_of(f, v);
         visit(f, k);
         const int z = (k + 2) % 3;
-        if (is_border(f, z) || f->FFp(z) == first) return;
+        if (is_border(f, z)) break;
         f = f->FFp(z);
+        if (f == start) return;
+    }
+    f = start;
+    for (std::size_t guard = 0; guard <= mesh_.face.size(); ++guard) {
+        const int k = corner_of(f, v);
+        if (is_border(f, k)) return;
+        f = f->FFp(k);
+        visit(f, corner_of(f, v));
     }
     throw std::logic_error("split mesh: a vertex star does not close");
 }
@@ -233,7 +236,7 @@ void SplitMesh::for_each_face(std::uint32_t vi, Visit&& visit) const {
 std::size_t SplitMesh::valence(std::uint32_t v, bool& boundary) const {
     std::size_t faces = 0;
     boundary = false;
-    for_each_face(v, [&](SFace* f, int k) {
+    for_each_face_any_order(v, [&](SFace* f, int k) {
         ++faces;
         boundary = boundary || is_border(f, (k + 2) % 3) || is_border(f, k);
     });
@@ -243,7 +246,7 @@ std::size_t SplitMesh::valence(std::uint32_t v, bool& boundary) const {
 bool SplitMesh::find_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const {
     bool found = false;
     const SVertex* target = &mesh_.vert[w];
-    for_each_face(u, [&](SFace* f, int k) {
+    for_each_face_any_order(u, [&](SFace* f, int k) {
         if (!found && f->cV((k + 1) % 3) == target) {
             face = f;
             z = k;
@@ -253,10 +256,32 @@ bool SplitMesh::find_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z
     return found;
 }
 
+bool SplitMesh::find_undirected_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const {
+    const SVertex* target = &mesh_.vert[w];
+    SFace* reverse = nullptr;
+    int reverse_z = -1;
+    bool found = false;
+    for_each_face_any_order(u, [&](SFace* f, int k) {
+        if (found) return;
+        if (f->cV((k + 1) % 3) == target) {
+            face = f;
+            z = k;
+            found = true;
+        } else if (!reverse && f->cV((k + 2) % 3) == target) {
+            reverse = f;
+            reverse_z = (k + 2) % 3;
+        }
+    });
+    if (found || !reverse) return found;
+    face = reverse;
+    z = reverse_z;
+    return true;
+}
+
 bool SplitMesh::adjacent(std::uint32_t u, std::uint32_t w) const {
     bool found = false;
     const SVertex* target = &mesh_.vert[w];
-    for_each_face(u, [&](SFace* f, int k) {
+    for_each_face_any_order(u, [&](SFace* f, int k) {
         found = found || f->cV((k + 1) % 3) == target || f->cV((k + 2) % 3) == target;
     });
     return found;

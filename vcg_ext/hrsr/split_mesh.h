@@ -58,6 +58,8 @@ public:
     /// The face with the directed edge u→w and that edge's index, found around u without
     /// allocating; false if there is none.
     bool find_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const;
+    /// The edge {u, w} in either direction, preferring the face with u→w (one walk around u).
+    bool find_undirected_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const;
 
     /// Whether edge z of f can be flipped: interior, both sides triangles, the new diagonal
     /// absent, and no interior endpoint of the edge left with fewer than 3 edges.
@@ -82,9 +84,9 @@ private:
     void set_face_of(SFace* f);
     /// Number of edges at v and whether it lies on the boundary, by walking its faces.
     std::size_t valence(std::uint32_t v, bool& boundary) const;
-    /// Calls visit(face, corner) for every face around v (clockwise to the boundary first).
+    /// Calls visit(face, corner) for every face around v, in no particular order.
     template <class Visit>
-    void for_each_face(std::uint32_t v, Visit&& visit) const;
+    void for_each_face_any_order(std::uint32_t v, Visit&& visit) const;
 
     SMesh mesh_;
     std::vector<SFace*> face_of_; ///< per vertex: one incident face (null if isolated)

@@ -20,14 +20,17 @@ Fans compute_fans(std::size_t n, const std::vector<Triangle>& triangles) {
     Fans fans;
     fans.corner_fan.assign(3 * triangles.size(), 0);
     fans.fan_count.assign(n, 0);
+    // Per-vertex scratch, reused: no allocation per vertex.
+    DisjointSets sets(0);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> spokes; // (other endpoint, local corner)
+    std::vector<std::uint32_t> fan_of_root;
     for (std::size_t v = 0; v < n; ++v) {
         const std::uint32_t first = offset[v], count = offset[v + 1] - first;
         if (count == 0) continue;
         // Two corners at v are in one fan when their triangles share an edge at v, i.e. the
         // other endpoint of one of their edges at v is the same vertex.
-        DisjointSets sets(count);
-        std::vector<std::pair<std::uint32_t, std::uint32_t>>
-            spokes; // (other endpoint, local corner)
+        sets.reset(count);
+        spokes.clear();
         for (std::uint32_t c = 0; c < count; ++c) {
             const std::uint32_t corner = corners[first + c], t = corner / 3, k = corner % 3;
             spokes.emplace_back(triangles[t][(k + 1) % 3], c);
@@ -37,7 +40,7 @@ Fans compute_fans(std::size_t n, const std::vector<Triangle>& triangles) {
         for (std::size_t s = 1; s < spokes.size(); ++s)
             if (spokes[s].first == spokes[s - 1].first)
                 sets.unite(spokes[s].second, spokes[s - 1].second);
-        std::vector<std::uint32_t> fan_of_root(count, ~0u);
+        fan_of_root.assign(count, ~0u);
         for (std::uint32_t c = 0; c < count; ++c) { // corners are in triangle order
             std::uint32_t& fan = fan_of_root[sets.find(c)];
             if (fan == ~0u) fan = fans.fan_count[v]++;

@@ -4,6 +4,7 @@
 #include "mesh/fans.h"
 
 #include <algorithm>
+#include <numeric>
 #include <tuple>
 
 namespace hrsr {
@@ -19,31 +20,40 @@ struct HalfEdge {
     }
 };
 
-std::vector<HalfEdge> sorted_half_edges(const std::vector<Triangle>& triangles) {
-    std::vector<HalfEdge> h;
-    h.reserve(3 * triangles.size());
+// Half-edges grouped by undirected key: a counting sort on the smaller endpoint, then an
+// insertion sort of each (small) bucket by the larger one. Triangles are visited in order and
+// the insertion sort is stable, so equal keys stay in triangle order: the same order as a full
+// sort by (lo, hi, triangle), several times faster on meshes with millions of edges.
+std::vector<HalfEdge> sorted_half_edges(std::size_t n, const std::vector<Triangle>& triangles) {
+    std::vector<std::uint32_t> start(n + 1, 0);
+    for (const Triangle& t : triangles)
+        for (int k = 0; k < 3; ++k)
+            if (t[k] != t[(k + 1) % 3]) ++start[std::min(t[k], t[(k + 1) % 3]) + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<HalfEdge> h(start[n]);
+    std::vector<std::uint32_t> cursor(start.begin(), start.end() - 1);
     for (std::uint32_t t = 0; t < triangles.size(); ++t)
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
             if (a == b) continue;
-            h.push_back({std::min(a, b), std::max(a, b), t, a < b});
+            h[cursor[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), t, a < b};
         }
-    std::sort(h.begin(), h.end());
+    for (std::size_t v = 0; v < n; ++v)
+        for (std::uint32_t i = start[v] + 1; i < start[v + 1]; ++i)
+            for (std::uint32_t j = i; j > start[v] && h[j].hi < h[j - 1].hi; --j)
+                std::swap(h[j], h[j - 1]);
     return h;
 }
 
-} // namespace
-
-std::vector<std::uint32_t> triangle_components(std::size_t, const std::vector<Triangle>& triangles,
-                                               std::size_t& count) {
-    const std::vector<HalfEdge> h = sorted_half_edges(triangles);
-    DisjointSets sets(triangles.size());
+std::vector<std::uint32_t> label_components(const std::vector<HalfEdge>& h,
+                                            std::size_t triangle_count, std::size_t& count) {
+    DisjointSets sets(triangle_count);
     for (std::size_t a = 0; a + 1 < h.size(); ++a)
         if (h[a].lo == h[a + 1].lo && h[a].hi == h[a + 1].hi)
             sets.unite(h[a].triangle, h[a + 1].triangle);
-    std::vector<std::uint32_t> label(triangles.size()), root_label(triangles.size(), ~0u);
+    std::vector<std::uint32_t> label(triangle_count), root_label(triangle_count, ~0u);
     count = 0;
-    for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+    for (std::uint32_t t = 0; t < triangle_count; ++t) {
         const std::uint32_t r = sets.find(t);
         if (root_label[r] == ~0u) root_label[r] = std::uint32_t(count++);
         label[t] = root_label[r];
@@ -51,7 +61,15 @@ std::vector<std::uint32_t> triangle_components(std::size_t, const std::vector<Tr
     return label;
 }
 
-MeshStats measure_mesh(std::size_t n, const std::vector<Triangle>& triangles) {
+} // namespace
+
+std::vector<std::uint32_t>
+triangle_components(std::size_t n, const std::vector<Triangle>& triangles, std::size_t& count) {
+    return label_components(sorted_half_edges(n, triangles), triangles.size(), count);
+}
+
+MeshStats measure_mesh(std::size_t n, const std::vector<Triangle>& triangles,
+                       std::vector<std::uint32_t>* triangle_component) {
     MeshStats s;
     s.faces = triangles.size();
     std::vector<std::uint8_t> used(n, 0);
@@ -62,9 +80,9 @@ MeshStats measure_mesh(std::size_t n, const std::vector<Triangle>& triangles) {
     s.vertices = std::size_t(std::count(used.begin(), used.end(), 1));
     s.unreferenced_vertices = n - s.vertices;
 
-    const std::vector<HalfEdge> h = sorted_half_edges(triangles);
+    const std::vector<HalfEdge> h = sorted_half_edges(n, triangles);
     std::size_t component_count = 0;
-    const std::vector<std::uint32_t> component = triangle_components(n, triangles, component_count);
+    std::vector<std::uint32_t> component = label_components(h, triangles.size(), component_count);
     s.components.resize(component_count);
     // Boundary loops: union-find over the endpoints of boundary edges.
     DisjointSets boundary(n);
@@ -102,6 +120,7 @@ MeshStats measure_mesh(std::size_t n, const std::vector<Triangle>& triangles) {
     const Fans fans = compute_fans(n, triangles);
     s.non_manifold_vertices = std::size_t(std::count_if(
         fans.fan_count.begin(), fans.fan_count.end(), [](std::uint32_t c) { return c > 1; }));
+    if (triangle_component) *triangle_component = std::move(component);
     return s;
 }
 

@@ -32,8 +32,10 @@ struct MeshStats {
     long euler() const { return long(vertices) - long(edges) + long(faces); }
 };
 
-/// Measures `triangles` over `vertex_count` vertices.
-MeshStats measure_mesh(std::size_t vertex_count, const std::vector<Triangle>& triangles);
+/// Measures `triangles` over `vertex_count` vertices; optionally also gives each triangle's
+/// component (as triangle_components does).
+MeshStats measure_mesh(std::size_t vertex_count, const std::vector<Triangle>& triangles,
+                       std::vector<std::uint32_t>* triangle_component = nullptr);
 
 /// Face-connected components (through shared edges): per triangle its component id, ids in
 /// order of first triangle.
