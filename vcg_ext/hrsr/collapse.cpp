@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <queue>
 #include <tuple>
 
 namespace hrsr {
@@ -39,17 +38,19 @@ public:
                     neighbours_[i].push_back(*j); // D-14: > 90° never linked
         for (std::uint32_t i = 0; i < g.size(); ++i)
             for (std::uint32_t j : neighbours_[i])
-                if (i < j) push(i, j);
+                if (i < j) {
+                    push(i, j);
+                    ++edges_;
+                }
     }
 
     // Pops and performs the next valid collapse; false when no valid edge is left.
     bool collapse_next(std::vector<CollapseRecord>& records) {
         while (!queue_.empty()) {
-            const QueuedEdge e = queue_.top();
-            queue_.pop();
-            if (!alive_[e.lo] || !alive_[e.hi] || version_[e.lo] != e.lo_version ||
-                version_[e.hi] != e.hi_version)
-                continue;                             // stale
+            std::pop_heap(queue_.begin(), queue_.end(), std::greater<QueuedEdge>());
+            const QueuedEdge e = queue_.back();
+            queue_.pop_back();
+            if (stale(e)) continue;
             if (n_[e.lo].dot(n_[e.hi]) < 0) continue; // D-15: merged normals may have turned apart
             merge(e.lo, e.hi, records);
             return true;
@@ -63,12 +64,29 @@ public:
     bool alive(std::uint32_t i) const { return alive_[i]; }
 
 private:
+    bool stale(const QueuedEdge& e) const {
+        return !alive_[e.lo] || !alive_[e.hi] || version_[e.lo] != e.lo_version ||
+               version_[e.hi] != e.hi_version;
+    }
+
+    // Every graph edge has at most one valid entry, so once stale entries outnumber the edges
+    // the heap is rebuilt from the valid ones: memory stays within twice the live edges, and the
+    // valid entries (totally ordered, D-10) come out in the same order as before.
+    void drop_stale_entries() {
+        if (queue_.size() < kMinCompaction || queue_.size() < 2 * edges_) return;
+        queue_.erase(std::remove_if(queue_.begin(), queue_.end(),
+                                    [&](const QueuedEdge& e) { return stale(e); }),
+                     queue_.end());
+        std::make_heap(queue_.begin(), queue_.end(), std::greater<QueuedEdge>());
+    }
+
     void push(std::uint32_t a, std::uint32_t b) {
         const std::uint32_t lo = std::min(a, b), hi = std::max(a, b);
         // §6.1: tangent distance times the merged weight, in both distance modes.
         const double priority =
             tangent_distance(x_[hi] - x_[lo], n_[lo], n_[hi]) * double(w_[lo] + w_[hi]);
-        queue_.push({priority, lo, hi, version_[lo], version_[hi]});
+        queue_.push_back({priority, lo, hi, version_[lo], version_[hi]});
+        std::push_heap(queue_.begin(), queue_.end(), std::greater<QueuedEdge>());
     }
 
     void merge(std::uint32_t a, std::uint32_t b, std::vector<CollapseRecord>& records) {
@@ -77,7 +95,7 @@ private:
         Vec3 normal = (n_[a] * wa + n_[b] * wb) / total;
         const double length = normal.Norm();
         normal = length > 1e-12 ? normal / length : n_[a]; // D-9
-        records.push_back({a, b, x_[a], x_[b], merged});
+        records.push_back({a, b, x_[a], x_[b]});
         x_[a] = merged;
         n_[a] = normal;
         w_[a] += w_[b];
@@ -85,6 +103,7 @@ private:
         ++version_[a];
         ++version_[b];
         // b's neighbours become a's (no repeats, no self loops).
+        edges_ -= neighbours_[b].size();
         for (std::uint32_t c : neighbours_[b]) {
             auto& list = neighbours_[c];
             list.erase(std::remove(list.begin(), list.end(), b), list.end());
@@ -93,9 +112,11 @@ private:
                 neighbours_[a].end()) {
                 neighbours_[a].push_back(c);
                 list.push_back(a);
+                ++edges_;
             }
         }
         std::vector<std::uint32_t>().swap(neighbours_[b]);
+        drop_stale_entries();
         for (std::uint32_t c : neighbours_[a]) push(a, c);
     }
 
@@ -103,7 +124,9 @@ private:
     std::vector<std::uint32_t> w_, version_;
     std::vector<std::uint8_t> alive_;
     std::vector<std::vector<std::uint32_t>> neighbours_;
-    std::priority_queue<QueuedEdge, std::vector<QueuedEdge>, std::greater<QueuedEdge>> queue_;
+    static constexpr std::size_t kMinCompaction = 1 << 16;
+    std::size_t edges_ = 0;         ///< edges of the current graph
+    std::vector<QueuedEdge> queue_; ///< binary min-heap on (priority, lo, hi), with stale entries
 };
 
 } // namespace

@@ -14,7 +14,7 @@ namespace hrsr {
 /// One merge of node `latent` into node `active` (ids are indices of the collapsed-from cloud).
 struct CollapseRecord {
     std::uint32_t active, latent;
-    Vec3 active_before, latent_before, merged;
+    Vec3 active_before, latent_before; ///< positions just before the merge
 };
 
 struct CollapsedCloud {

@@ -8,10 +8,23 @@ namespace hrsr::reexpand {
 
 namespace {
 
-using Edge = std::pair<std::uint32_t, std::uint32_t>;
+// An edge {first, second} with a hint: a face and index where first→second was last seen.
+struct Edge {
+    std::uint32_t first, second;
+    SFace* face = nullptr;
+    int z = -1;
+};
 
-// The face and edge index of {u, w} (stored either way round); false if it is not an edge.
+// The face and edge index of {first, second}, preferring first→second; false if it is not an
+// edge. A hint that still holds first→second is the answer the walk would give (in a manifold
+// mesh one face holds a directed edge), so the walk is only needed for stale hints.
 bool locate(const SplitMesh& m, const Edge& e, SFace*& face, int& z) {
+    if (e.face && m.vertex_of(e.face, e.z) == e.first &&
+        m.vertex_of(e.face, (e.z + 1) % 3) == e.second) {
+        face = e.face;
+        z = e.z;
+        return true;
+    }
     return m.find_undirected_edge(e.first, e.second, face, z);
 }
 
@@ -38,11 +51,16 @@ bool worth_flipping(const SplitMesh& m, SFace* f, int z, double small_cos) {
 }
 
 void pass(SplitMesh& m, std::vector<Edge>& edges, double small_cos, std::size_t& flips) {
-    auto length = [&](const Edge& e) {
-        return (m.position(e.first) - m.position(e.second)).Norm();
-    };
-    std::stable_sort(edges.begin(), edges.end(),
-                     [&](const Edge& x, const Edge& y) { return length(x) < length(y); });
+    // Stable sort by length: lengths computed once, ties kept in list order.
+    std::vector<std::pair<double, std::uint32_t>> order;
+    order.reserve(edges.size());
+    for (std::uint32_t k = 0; k < edges.size(); ++k)
+        order.emplace_back((m.position(edges[k].first) - m.position(edges[k].second)).Norm(), k);
+    std::sort(order.begin(), order.end());
+    std::vector<Edge> sorted;
+    sorted.reserve(edges.size());
+    for (const auto& entry : order) sorted.push_back(edges[entry.second]);
+    edges.swap(sorted);
     for (auto it = edges.rbegin(); it != edges.rend(); ++it) {
         SFace* f = nullptr;
         int z = -1;
@@ -53,7 +71,7 @@ void pass(SplitMesh& m, std::vector<Edge>& edges, double small_cos, std::size_t&
         SFace* g = f->FFp(z);
         const Edge diagonal{m.vertex_of(f, (z + 2) % 3), m.vertex_of(g, (f->FFi(z) + 2) % 3)};
         m.flip(f, z);
-        *it = diagonal; // the edge keeps its identity, with new endpoints
+        *it = diagonal; // the edge keeps its identity, with new endpoints (and no hint)
         ++flips;
     }
 }
@@ -65,18 +83,22 @@ std::size_t improve_around(SplitMesh& m, std::uint32_t v, const ReexpandOptions&
     const Star s = m.star(v);
     const std::size_t d = s.neighbours.size();
     for (std::size_t k = 0; k < d; ++k) {
-        one_ring.emplace_back(v, s.neighbours[k]);
-        SFace* f = s.wedges[k];
-        if (!f) continue;
-        const Edge link{s.neighbours[k], s.neighbours[(k + 1) % d]};
-        circle.push_back(link);
-        SFace* face = nullptr;
-        int z = -1;
-        if (!locate(m, link, face, z) || face->FFp(z) == face) continue;
-        SFace* far = face->FFp(z);
-        const int w = face->FFi(z);
-        two_ring.emplace_back(m.vertex_of(far, (w + 1) % 3), m.vertex_of(far, (w + 2) % 3));
-        two_ring.emplace_back(m.vertex_of(far, (w + 2) % 3), m.vertex_of(far, w));
+        SFace* f = s.wedges[k]; // (v, q_k, q_k+1): holds v→q_k and q_k→q_k+1
+        if (!f) {
+            one_ring.push_back({v, s.neighbours[k]});
+            continue;
+        }
+        int corner = 0;
+        while (m.vertex_of(f, corner) != v) ++corner;
+        one_ring.push_back({v, s.neighbours[k], f, corner});
+        const int link = (corner + 1) % 3;
+        circle.push_back({s.neighbours[k], s.neighbours[(k + 1) % d], f, link});
+        if (f->FFp(link) == f) continue;
+        SFace* far = f->FFp(link);
+        const int w = f->FFi(link);
+        two_ring.push_back(
+            {m.vertex_of(far, (w + 1) % 3), m.vertex_of(far, (w + 2) % 3), far, (w + 1) % 3});
+        two_ring.push_back({m.vertex_of(far, (w + 2) % 3), m.vertex_of(far, w), far, (w + 2) % 3});
     }
     const double small_cos = std::cos(o.refinement_angle_degrees * M_PI / 180.0);
     std::size_t flips = 0;

@@ -39,11 +39,25 @@ struct Score {
     double worst_dihedral = 0; ///< max of 1 − n_t · n_t' over adjacent pairs
 };
 
+// E_D's term for two adjacent triangles with unit normals nt, nu sharing an edge of `length`.
+struct Joint {
+    double energy = 0, dihedral = 0;
+    Joint() = default;
+    Joint(const Vec3& nt, const Vec3& nu, double length) {
+        const double c = nt.dot(nu);
+        energy = (c - 1) * (c - 1) * length;
+        dihedral = 1 - c;
+    }
+};
+
 // The wedge triangles (centre, q_k, q_k+1) of one side do not depend on the pair being scored:
-// their normals and min-angle terms are computed once per split, not once per pair.
+// their normals, min-angle terms, spoke lengths and the joints between consecutive wedges are
+// computed once per split, not once per pair.
 struct Fan {
     std::vector<Vec3> normal;
     std::vector<double> angle;
+    std::vector<double> spoke_length; ///< |q_k − centre|, at least 1e-8 (D-2 units)
+    std::vector<Joint> joint;         ///< at spoke k: wedges k−1 and k, when both are faces
     Fan(const Vec3& centre, const std::vector<Vec3>& q, const std::vector<SFace*>& wedges,
         const ReexpandOptions& o) {
         const std::size_t d = q.size();
@@ -51,6 +65,13 @@ struct Fan {
             const Tri t{{centre, q[w], q[(w + 1) % d]}};
             normal.push_back(wedges[w] ? t.normal() : Vec3(0, 0, 0));
             angle.push_back(wedges[w] && o.min_angle_weight > 0 ? angle_term(t, o) : 0.0);
+            spoke_length.push_back(std::max((q[w] - centre).Norm(), 1e-8));
+        }
+        joint.resize(d);
+        for (std::size_t w = 0; w < d; ++w) {
+            const std::size_t before = (w + d - 1) % d;
+            if (wedges[w] && wedges[before])
+                joint[w] = Joint(normal[before], normal[w], spoke_length[w]);
         }
     }
 };
@@ -73,26 +94,24 @@ struct NewTriangles {
 };
 
 // Chains of triangles around the two split vertices; consecutive ones share a spoke.
-Score score(const std::vector<Vec3>& q, const std::vector<SFace*>& wedges, const Fan& new_fan,
-            const Fan& old_fan, const NewTriangles& spokes, std::size_t i, std::size_t j,
-            const Vec3& p_old, const Vec3& p_new, const ReexpandOptions& o) {
-    const std::size_t d = q.size();
+Score score(const std::vector<SFace*>& wedges, const Fan& new_fan, const Fan& old_fan,
+            const NewTriangles& spokes, std::size_t i, std::size_t j, const Vec3& p_old,
+            const Vec3& p_new, const ReexpandOptions& o) {
+    const std::size_t d = wedges.size();
     Score s;
-    auto pair = [&](const Vec3& nt, const Vec3& nu, const Vec3& e0, const Vec3& e1) {
-        const double c = nt.dot(nu);
-        const double length = std::max((e1 - e0).Norm(), 1e-8); // D-2 units
-        s.energy += (c - 1) * (c - 1) * length;
-        s.worst_dihedral = std::max(s.worst_dihedral, 1 - c);
+    auto add = [&](const Joint& joint) {
+        s.energy += joint.energy;
+        s.worst_dihedral = std::max(s.worst_dihedral, joint.dihedral);
     };
     const Vec3& n_out = spokes.out_normal[j];
     const Vec3& n_in = spokes.in_normal[i];
     const bool with_angles = o.min_angle_weight > 0;
     if (with_angles) s.energy += spokes.out_angle[j] + spokes.in_angle[i];
-    pair(n_in, n_out, p_old, p_new); // D-18: the true shared edge
-    // side(centre, from, to): the wedges from spoke `from` counter-clockwise to spoke `to`.
-    auto side = [&](const Fan& fan, const Vec3& centre, std::size_t from, std::size_t to,
-                    const Vec3& first, const Vec3& last) {
-        Vec3 previous = first;
+    add(Joint(n_in, n_out, std::max((p_new - p_old).Norm(), 1e-8))); // D-18: the true shared edge
+    // side(from, to): the wedges from spoke `from` counter-clockwise to spoke `to`, between the
+    // new triangles with normals `first` (at `from`) and `last` (at `to`).
+    auto side = [&](const Fan& fan, std::size_t from, std::size_t to, const Vec3& first,
+                    const Vec3& last) {
         bool have_previous = true;
         for (std::size_t w = from; w != to; w = (w + 1) % d) {
             if (!wedges[w]) { // the boundary gap: no face, no adjacency across it (D-18)
@@ -100,14 +119,14 @@ Score score(const std::vector<Vec3>& q, const std::vector<SFace*>& wedges, const
                 continue;
             }
             if (with_angles) s.energy += fan.angle[w];
-            if (have_previous) pair(previous, fan.normal[w], centre, q[w]);
-            if ((w + 1) % d == to) pair(fan.normal[w], last, centre, q[to]);
-            previous = fan.normal[w];
+            if (have_previous)
+                add(w == from ? Joint(first, fan.normal[w], fan.spoke_length[w]) : fan.joint[w]);
+            if ((w + 1) % d == to) add(Joint(fan.normal[w], last, fan.spoke_length[to]));
             have_previous = true;
         }
     };
-    side(new_fan, p_new, j, i, n_out, n_in); // new side: b → a
-    side(old_fan, p_old, i, j, n_in, n_out); // old side: a → b
+    side(new_fan, j, i, n_out, n_in); // new side: b → a
+    side(old_fan, i, j, n_in, n_out); // old side: a → b
     return s;
 }
 
@@ -127,7 +146,7 @@ SplitChoice choose_split(const SplitMesh& mesh, std::uint32_t c, const Vec3& p_o
         for (std::size_t j = 0; j < d; ++j) {
             if (i == j) continue;
             const Score s =
-                score(q, star.wedges, new_fan, old_fan, spokes, i, j, p_old, p_new, options);
+                score(star.wedges, new_fan, old_fan, spokes, i, j, p_old, p_new, options);
             const SplitChoice candidate{true, star.neighbours[i], star.neighbours[j], s.energy};
             if (!best.found || s.energy < best.energy) best = candidate;
             if (s.worst_dihedral < constants::kDihedralGuard &&

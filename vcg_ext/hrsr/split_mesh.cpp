@@ -217,7 +217,7 @@ void SplitMesh::for_each_face_any_order(std::uint32_t vi, Visit&& visit) const {
     SFace* f = start;
     for (std::size_t guard = 0; guard <= mesh_.face.size(); ++guard) {
         const int k = corner_of(f, v);
-        visit(f, k);
+        if (visit(f, k)) return;
         const int z = (k + 2) % 3;
         if (is_border(f, z)) break;
         f = f->FFp(z);
@@ -228,7 +228,7 @@ void SplitMesh::for_each_face_any_order(std::uint32_t vi, Visit&& visit) const {
         const int k = corner_of(f, v);
         if (is_border(f, k)) return;
         f = f->FFp(k);
-        visit(f, corner_of(f, v));
+        if (visit(f, corner_of(f, v))) return;
     }
     throw std::logic_error("split mesh: a vertex star does not close");
 }
@@ -239,6 +239,7 @@ std::size_t SplitMesh::valence(std::uint32_t v, bool& boundary) const {
     for_each_face_any_order(v, [&](SFace* f, int k) {
         ++faces;
         boundary = boundary || is_border(f, (k + 2) % 3) || is_border(f, k);
+        return false;
     });
     return boundary ? faces + 1 : faces;
 }
@@ -247,11 +248,11 @@ bool SplitMesh::find_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z
     bool found = false;
     const SVertex* target = &mesh_.vert[w];
     for_each_face_any_order(u, [&](SFace* f, int k) {
-        if (!found && f->cV((k + 1) % 3) == target) {
-            face = f;
-            z = k;
-            found = true;
-        }
+        if (f->cV((k + 1) % 3) != target) return false;
+        face = f;
+        z = k;
+        found = true;
+        return true;
     });
     return found;
 }
@@ -262,15 +263,17 @@ bool SplitMesh::find_undirected_edge(std::uint32_t u, std::uint32_t w, SFace*& f
     int reverse_z = -1;
     bool found = false;
     for_each_face_any_order(u, [&](SFace* f, int k) {
-        if (found) return;
         if (f->cV((k + 1) % 3) == target) {
             face = f;
             z = k;
             found = true;
-        } else if (!reverse && f->cV((k + 2) % 3) == target) {
+            return true;
+        }
+        if (!reverse && f->cV((k + 2) % 3) == target) {
             reverse = f;
             reverse_z = (k + 2) % 3;
         }
+        return false;
     });
     if (found || !reverse) return found;
     face = reverse;
@@ -282,7 +285,8 @@ bool SplitMesh::adjacent(std::uint32_t u, std::uint32_t w) const {
     bool found = false;
     const SVertex* target = &mesh_.vert[w];
     for_each_face_any_order(u, [&](SFace* f, int k) {
-        found = found || f->cV((k + 1) % 3) == target || f->cV((k + 2) % 3) == target;
+        found = f->cV((k + 1) % 3) == target || f->cV((k + 2) % 3) == target;
+        return found;
     });
     return found;
 }

@@ -84,7 +84,8 @@ private:
     void set_face_of(SFace* f);
     /// Number of edges at v and whether it lies on the boundary, by walking its faces.
     std::size_t valence(std::uint32_t v, bool& boundary) const;
-    /// Calls visit(face, corner) for every face around v, in no particular order.
+    /// Calls visit(face, corner) for the faces around v, in no particular order, until it
+    /// returns true.
     template <class Visit>
     void for_each_face_any_order(std::uint32_t v, Visit&& visit) const;
 
