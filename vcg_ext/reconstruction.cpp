@@ -93,6 +93,9 @@ Reconstruction make_output(const PreparedCloud& cloud,
     Reconstruction mesh;
     mesh.triangles = std::move(triangles);
     std::vector<Vec3> positions;
+    positions.reserve(vertex_point.size());
+    mesh.vertex_input_index.reserve(vertex_point.size());
+    mesh.vertex_normals.reserve(vertex_point.size());
     for (std::uint32_t p : vertex_point) {
         mesh.vertex_input_index.push_back(cloud.input_index[p]);
         mesh.vertex_normals.push_back(cloud.normals[p]);
@@ -249,6 +252,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
         coarse_vertex_node.push_back(coarse.input_index[p]);
         coarse_positions.push_back(coarse.positions[p]);
     }
+    coarse = PreparedCloud();
     report.l_min = options.l_min_percent > 0
                        ? options.l_min_percent / 100.0 * report.preprocess.bbox_diagonal
                        : options.reexpand.l_min;
@@ -264,6 +268,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     Timer timer(report.timings, "assembly");
     // Fates of the points that are not their own vertex (§8.7).
     const std::vector<std::uint32_t> root = tree_roots(cloud.size(), collapsed.records);
+    collapsed = CollapsedCloud(); // the records are spent: free them before the output is built
     std::vector<std::uint8_t> dropped_root(cloud.size(), 0);
     for (std::uint32_t node : dropped_nodes) dropped_root[node] = 1;
     for (std::uint32_t node = 0; node < cloud.size(); ++node) {

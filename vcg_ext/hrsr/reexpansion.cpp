@@ -13,6 +13,50 @@ using namespace reexpand;
 
 namespace {
 
+// Per node, the mesh vertices standing for it (D-16). Almost always one, so one word per node:
+// the vertex itself, or (rarely: fan-split copies of a coarse vertex) a tagged index into lists
+// kept aside. An aliased node shares its target's word.
+class NodeVertices {
+public:
+    struct Span {
+        const std::uint32_t* first;
+        std::size_t size;
+        const std::uint32_t* begin() const { return first; }
+        const std::uint32_t* end() const { return first + size; }
+    };
+
+    NodeVertices(std::size_t nodes, const std::vector<std::uint32_t>& coarse_vertex_node)
+        : word_(nodes, kNone) {
+        for (std::uint32_t v = 0; v < coarse_vertex_node.size(); ++v) {
+            std::uint32_t& w = word_[coarse_vertex_node[v]];
+            if (w == kNone) {
+                w = v;
+                continue;
+            }
+            if (!(w & kListBit)) {
+                lists_.push_back({w});
+                w = kListBit | std::uint32_t(lists_.size() - 1);
+            }
+            lists_[w & ~kListBit].push_back(v);
+        }
+    }
+
+    Span of(std::uint32_t node) const {
+        const std::uint32_t& w = word_[node];
+        if (w == kNone) return {nullptr, 0};
+        if (!(w & kListBit)) return {&w, 1};
+        const std::vector<std::uint32_t>& list = lists_[w & ~kListBit];
+        return {list.data(), list.size()};
+    }
+    void set(std::uint32_t node, std::uint32_t vertex) { word_[node] = vertex; }
+    void share(std::uint32_t from, std::uint32_t to) { word_[to] = word_[from]; }
+
+private:
+    static constexpr std::uint32_t kNone = ~0u, kListBit = 1u << 31;
+    std::vector<std::uint32_t> word_;
+    std::vector<std::vector<std::uint32_t>> lists_;
+};
+
 class Replayer {
 public:
     Replayer(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
@@ -23,22 +67,22 @@ public:
         : points_(points), normals_(normals), options_(options), observer_(observer),
           mesh_(coarse_positions, coarse_triangles, coarse_positions.size() + records,
                 coarse_triangles.size() + 2 * records),
-          vertices_of_(points.size()), vertex_node_(coarse_vertex_node) {
-        for (std::uint32_t v = 0; v < coarse_vertex_node.size(); ++v)
-            vertices_of_[coarse_vertex_node[v]].push_back(v);
+          vertices_of_(points.size(), coarse_vertex_node), vertex_node_(coarse_vertex_node) {
+        vertex_node_.reserve(coarse_vertex_node.size() + records);
         alias_.assign(points.size(), ReexpandedMesh::kNoNode);
         for (std::uint32_t node : coarse_vertex_node) alias_[node] = node;
     }
 
     // Aliasing (D-16): b is represented by a's vertices from now on.
     void alias(const CollapseRecord& r) {
-        vertices_of_[r.latent] = vertices_of_[r.active];
+        vertices_of_.share(r.active, r.latent);
         alias_[r.latent] = alias_[r.active];
     }
 
     void replay(const CollapseRecord& r, ReexpansionStats& stats) {
-        const std::vector<std::uint32_t> candidates = vertices_of_[r.active];
-        if (candidates.empty()) { // the node never reached the mesh: its subtree is dropped
+        // Stays valid while r.latent's entry changes: that is another word or list.
+        const NodeVertices::Span candidates = vertices_of_.of(r.active);
+        if (candidates.size == 0) { // the node never reached the mesh: its subtree is dropped
             ++stats.skipped_no_vertex;
             return;
         }
@@ -65,7 +109,7 @@ public:
             if (!choice.found) continue;
             const std::uint32_t c2 = mesh_.split(c, choice.a, choice.b, r.latent_before);
             vertex_node_.push_back(r.latent);
-            vertices_of_[r.latent] = {c2};
+            vertices_of_.set(r.latent, c2);
             alias_[r.latent] = r.latent;
             ++stats.replayed;
             if (unresolved) ++stats.unresolved_crossings;
@@ -94,7 +138,7 @@ private:
     const ReexpandOptions& options_;
     ReexpansionObserver* observer_;
     SplitMesh mesh_;
-    std::vector<std::vector<std::uint32_t>> vertices_of_; ///< per node: its mesh vertices (D-16)
+    NodeVertices vertices_of_;
     std::vector<std::uint32_t> vertex_node_;
     std::vector<std::uint32_t> alias_;
 };

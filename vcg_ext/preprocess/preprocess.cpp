@@ -112,6 +112,9 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     }
     const bool estimated = report.normal_origin == NormalOrigin::Estimated;
     const bool tangent = options.distance == DistanceMode::Tangent;
+    // HRsR with input normals collapses the unsmoothed positions and smooths only the collapsed
+    // cloud (§7): no kd-tree, no smoothed copy of the full cloud.
+    if (purpose == PrepareFor::Collapse && !estimated && !graph) return cloud;
     cloud.smoothed = cloud.positions;
 
     // Schedule of §4.4: each round reads the previous round's positions through a kd-tree
@@ -150,6 +153,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
         }
         if (graph) *graph = std::move(g);
     }
+    if (purpose == PrepareFor::Collapse) std::vector<Vec3>().swap(cloud.smoothed); // unused
     return cloud;
 }
 

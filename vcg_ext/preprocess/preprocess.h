@@ -19,7 +19,8 @@ namespace hrsr {
 struct PreparedCloud {
     std::vector<std::uint32_t> input_index; ///< point -> index in the input point set
     std::vector<Vec3> positions;            ///< normalised input positions (D-2)
-    std::vector<Vec3> smoothed; ///< normalised smoothed positions (= positions in Euclidean mode)
+    std::vector<Vec3> smoothed; ///< normalised smoothed positions (= positions in Euclidean
+                                ///< mode); empty when prepared for the collapse
     std::vector<Vec3> normals;  ///< unit; consistently oriented per connected piece
     Normalisation normalisation;
     /// Set by preprocess(): component of each point (0 … component_count − 1, §4.6).

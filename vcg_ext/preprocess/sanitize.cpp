@@ -115,6 +115,10 @@ SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
             " exact duplicate points were merged into their first occurrence");
 
     SanitizedCloud cloud;
+    const std::size_t kept = report.count(PointFate::Kept);
+    cloud.input_index.reserve(kept);
+    cloud.positions.reserve(kept);
+    if (use_normals) cloud.normals.reserve(kept);
     for (std::uint32_t i = 0; i < n; ++i) {
         if (report.fate[i] != PointFate::Kept) continue;
         cloud.input_index.push_back(i);
