@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 1 unreadable or invalid input / failed output, 2 usage error.
 #include "errors.h"
 #include "normals_command.h"
+#include "process_stats.h"
 #include "reconstruct_command.h"
 #include "usage_error.h"
 
@@ -20,6 +21,7 @@ int fail(int code, const char* what) {
 } // namespace
 
 int main(int argc, char** argv) {
+    hrsr::app::release_large_blocks_eagerly();
     CLI::App app{"hrsr " HRSR_VERSION
                  " - Hierarchical Rotation System Reconstruction of point clouds",
                  "hrsr"};

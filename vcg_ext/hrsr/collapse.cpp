@@ -30,18 +30,21 @@ public:
           alive_(positions.size(), 1), neighbours_(positions.size()) {}
 
     void build_graph(int k, const Execution& exec) {
-        const KnnIndex index(x_);
-        const CsrGraph g = symmetric_union(knn_table(index, k, exec), x_.size(), exec);
-        for (std::uint32_t i = 0; i < g.size(); ++i)
-            for (const std::uint32_t* j = g.begin(i); j != g.end(i); ++j)
-                if (n_[i].dot(n_[*j]) >= 0)
-                    neighbours_[i].push_back(*j); // D-14: > 90° never linked
-        for (std::uint32_t i = 0; i < g.size(); ++i)
+        { // the kd-tree and the kNN graphs are freed before the queue is filled (peak memory)
+            const KnnIndex index(x_);
+            const CsrGraph g = symmetric_union(knn_table(index, k, exec), x_.size(), exec);
+            for (std::uint32_t i = 0; i < g.size(); ++i)
+                for (const std::uint32_t* j = g.begin(i); j != g.end(i); ++j)
+                    if (n_[i].dot(n_[*j]) >= 0)
+                        neighbours_[i].push_back(*j); // D-14: > 90° never linked
+        }
+        for (const auto& list : neighbours_) edges_ += list.size();
+        edges_ /= 2;
+        queue_.reserve(edges_ + edges_ / 4 + 16); // room for stale entries, see drop_stale_entries
+        for (std::uint32_t i = 0; i < neighbours_.size(); ++i)
             for (std::uint32_t j : neighbours_[i])
-                if (i < j) {
-                    push(i, j);
-                    ++edges_;
-                }
+                if (i < j) queue_.push_back(entry(i, j));
+        std::make_heap(queue_.begin(), queue_.end(), std::greater<QueuedEdge>());
     }
 
     // Pops and performs the next valid collapse; false when no valid edge is left.
@@ -69,23 +72,29 @@ private:
                version_[e.hi] != e.hi_version;
     }
 
-    // Every graph edge has at most one valid entry, so once stale entries outnumber the edges
-    // the heap is rebuilt from the valid ones: memory stays within twice the live edges, and the
-    // valid entries (totally ordered, D-10) come out in the same order as before.
-    void drop_stale_entries() {
-        if (queue_.size() < kMinCompaction || queue_.size() < 2 * edges_) return;
+    // Every graph edge has at most one valid entry and the graph only loses edges, so when the
+    // heap is about to outgrow the room reserved for it (a quarter more than the first edge
+    // count), at least a fifth of it is stale: it is rebuilt from the valid entries instead of
+    // reallocated. Memory stays at the reservation, and the valid entries (totally ordered,
+    // D-10) come out in the same order as before.
+    void drop_stale_entries(std::size_t incoming) {
+        if (queue_.size() + incoming <= queue_.capacity()) return;
         queue_.erase(std::remove_if(queue_.begin(), queue_.end(),
                                     [&](const QueuedEdge& e) { return stale(e); }),
                      queue_.end());
         std::make_heap(queue_.begin(), queue_.end(), std::greater<QueuedEdge>());
     }
 
-    void push(std::uint32_t a, std::uint32_t b) {
+    QueuedEdge entry(std::uint32_t a, std::uint32_t b) const {
         const std::uint32_t lo = std::min(a, b), hi = std::max(a, b);
         // §6.1: tangent distance times the merged weight, in both distance modes.
         const double priority =
             tangent_distance(x_[hi] - x_[lo], n_[lo], n_[hi]) * double(w_[lo] + w_[hi]);
-        queue_.push_back({priority, lo, hi, version_[lo], version_[hi]});
+        return {priority, lo, hi, version_[lo], version_[hi]};
+    }
+
+    void push(std::uint32_t a, std::uint32_t b) {
+        queue_.push_back(entry(a, b));
         std::push_heap(queue_.begin(), queue_.end(), std::greater<QueuedEdge>());
     }
 
@@ -116,7 +125,7 @@ private:
             }
         }
         std::vector<std::uint32_t>().swap(neighbours_[b]);
-        drop_stale_entries();
+        drop_stale_entries(neighbours_[a].size());
         for (std::uint32_t c : neighbours_[a]) push(a, c);
     }
 
@@ -124,7 +133,6 @@ private:
     std::vector<std::uint32_t> w_, version_;
     std::vector<std::uint8_t> alive_;
     std::vector<std::vector<std::uint32_t>> neighbours_;
-    static constexpr std::size_t kMinCompaction = 1 << 16;
     std::size_t edges_ = 0;         ///< edges of the current graph
     std::vector<QueuedEdge> queue_; ///< binary min-heap on (priority, lo, hi), with stale entries
 };
