@@ -37,9 +37,7 @@ CLI::App* add_check_command(CLI::App& app, CheckArguments& a) {
     c->add_flag_function(
         "--no-self-intersections", [&a](std::int64_t) { a.options.self_intersections = false; },
         "Skip the triangle-pair intersection test (the slowest measure)");
-    c->add_option("--threads", a.threads, "Worker threads; 0 = all cores")
-        ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+    add_threads_option(*c, a.threads);
     return c;
 }
 

@@ -1,17 +1,12 @@
 #include "check_json.h"
 
+#include "mesh_summary.h"
+
 #include <cstdio>
 
 namespace hrsr::app {
 
 namespace {
-
-nlohmann::json genus_of_closed_components(const MeshStats& m) {
-    nlohmann::json genus = nlohmann::json::array();
-    for (const ComponentTopology& c : m.components)
-        if (c.closed()) genus.push_back(c.genus());
-    return genus;
-}
 
 nlohmann::json to_json(const OneSidedDistance& d, double diagonal) {
     return {{"area_samples", d.area_samples},
@@ -88,15 +83,12 @@ nlohmann::json to_json(const MeshCheck& c) {
 
 std::string summary(const std::string& path, const MeshCheck& c) {
     const MeshStats& m = c.topology;
-    std::string genus;
-    for (const ComponentTopology& t : m.components)
-        if (t.closed()) genus += (genus.empty() ? "" : ", ") + std::to_string(t.genus());
     std::string s = "hrsr check: " + path + "\n";
     s += "  " + std::to_string(m.vertices) + " vertices, " + std::to_string(m.faces) +
          " triangles (" + std::to_string(m.unreferenced_vertices) + " unreferenced, " +
          std::to_string(c.coincident_vertices) + " coincident vertices)\n";
     s += "  " + std::to_string(m.components.size()) +
-         " components (genus of closed ones: " + (genus.empty() ? "none" : genus) +
+         " components (genus of closed ones: " + genus_of_closed_components_text(m) +
          "); boundary: " + std::to_string(m.boundary_edges) + " edges in " +
          std::to_string(m.boundary_loops) + " loops\n";
     s += "  non-manifold: " + std::to_string(m.non_manifold_edges) + " edges, " +

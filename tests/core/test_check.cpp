@@ -5,6 +5,7 @@
 #include "mesh/surface_distance.h"
 
 #include "mesh_fixtures.h"
+#include "vcg_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -168,6 +169,41 @@ TEST(Check, PiercingTriangleIsFoundInALargeMesh) {
     for (const TrianglePair& p : pairs) EXPECT_EQ(p.second, m.triangles.size() - 1);
     // The same pairs whatever the thread count.
     EXPECT_EQ(self_intersecting_pairs(m.positions, m.triangles, {1, nullptr}), pairs);
+}
+
+TEST(Check, TrianglesOfThePairsAreThoseVcglibFinds) {
+    // Two overlapping spheres (a circle of crossings) and a triangle piercing one of them.
+    TestMesh m = testing::uv_sphere(20, 40);
+    const TestMesh other = testing::shifted(testing::uv_sphere(20, 40, 0.8), Vec3(0.9, 0.1, 0.05));
+    const auto offset = std::uint32_t(m.positions.size());
+    m.positions.insert(m.positions.end(), other.positions.begin(), other.positions.end());
+    for (Triangle f : other.triangles) {
+        for (std::uint32_t& v : f) v += offset;
+        m.triangles.push_back(f);
+    }
+    const std::uint32_t a = add_vertex(m, Vec3(-0.2, 0.1, 0.3)),
+                        b = add_vertex(m, Vec3(-2, 0, 0.3)), c = add_vertex(m, Vec3(-2, 0.3, 0.35));
+    m.triangles.push_back({a, b, c});
+    std::vector<std::uint32_t> ours;
+    for (const TrianglePair& p : self_intersecting_pairs(m.positions, m.triangles, {})) {
+        ours.push_back(p.first);
+        ours.push_back(p.second);
+    }
+    std::sort(ours.begin(), ours.end());
+    ours.erase(std::unique(ours.begin(), ours.end()), ours.end());
+
+    testing::VcgMesh v;
+    vcg::tri::Allocator<testing::VcgMesh>::AddVertices(v, m.positions.size());
+    for (std::size_t i = 0; i < m.positions.size(); ++i) v.vert[i].P() = m.positions[i];
+    vcg::tri::Allocator<testing::VcgMesh>::AddFaces(v, m.triangles.size());
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) v.face[t].V(k) = &v.vert[m.triangles[t][k]];
+    std::vector<std::uint32_t> theirs;
+    for (testing::VcgFace* f : testing::self_intersecting_faces(v))
+        theirs.push_back(std::uint32_t(vcg::tri::Index(v, f)));
+    std::sort(theirs.begin(), theirs.end());
+    EXPECT_GT(ours.size(), 40u);
+    EXPECT_EQ(ours, theirs);
 }
 
 TEST(Check, TouchingThroughVertexCopiesIsNotAnIntersection) {
