@@ -40,6 +40,12 @@ void add_preprocess_options(CLI::App& c, PreprocessOptions& o) {
         ->capture_default_str();
 }
 
+void add_threads_option(CLI::App& c, int& threads) {
+    c.add_option("--threads", threads, "Worker threads; 0 = all cores")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+}
+
 void check_output_is_not_input(const std::string& input, const std::string& output) {
     namespace fs = std::filesystem;
     std::error_code ec;

@@ -13,6 +13,9 @@ namespace hrsr::app {
 /// --k, --r, --theta, --distance, --reestimate-normals, --k-normals, --min-component-size.
 void add_preprocess_options(CLI::App& command, PreprocessOptions& options);
 
+/// --threads (0 = all cores, the default).
+void add_threads_option(CLI::App& command, int& threads);
+
 /// Throws UsageError when `output` names the input file (we never overwrite the input).
 void check_output_is_not_input(const std::string& input, const std::string& output);
 

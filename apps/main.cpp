@@ -1,5 +1,6 @@
 // hrsr: surface reconstruction from point clouds (command-line tool).
 // Exit codes: 0 success, 1 unreadable or invalid input / failed output, 2 usage error.
+#include "check_command.h"
 #include "errors.h"
 #include "normals_command.h"
 #include "process_stats.h"
@@ -31,6 +32,8 @@ int main(int argc, char** argv) {
     CLI::App* normals_command = hrsr::app::add_normals_command(app, normals);
     hrsr::app::ReconstructArguments reconstruct;
     CLI::App* reconstruct_command = hrsr::app::add_reconstruct_command(app, reconstruct);
+    hrsr::app::CheckArguments check;
+    CLI::App* check_command = hrsr::app::add_check_command(app, check);
 
     try {
         app.parse(argc, argv);
@@ -49,6 +52,7 @@ int main(int argc, char** argv) {
     try {
         if (normals_command->parsed()) hrsr::app::run_normals(normals);
         if (reconstruct_command->parsed()) hrsr::app::run_reconstruct(reconstruct);
+        if (check_command->parsed()) hrsr::app::run_check(check);
         return 0;
     } catch (const hrsr::app::UsageError& e) {
         return fail(2, e.what());

@@ -24,9 +24,7 @@ CLI::App* add_normals_command(CLI::App& app, NormalsArguments& a) {
         ->required(); // existence is checked by the reader: a missing file is bad input (exit 1)
     c->add_option("-o,--output", a.output, "Output PLY (binary, with normals)")->required();
     add_preprocess_options(*c, a.options);
-    c->add_option("--threads", a.threads, "Worker threads; 0 = all cores")
-        ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+    add_threads_option(*c, a.threads);
     c->add_option("--report", a.report, "Write a JSON report (what was dropped, merged and why)");
     c->add_flag("-q,--quiet", a.quiet, "No progress bar or summary");
     return c;

@@ -4,6 +4,7 @@
 #include "errors.h"
 #include "io/ply_writer.h"
 #include "io/point_set_reader.h"
+#include "mesh_summary.h"
 #include "process_stats.h"
 #include "reconstruction.h"
 #include "report_json.h"
@@ -63,9 +64,7 @@ CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& a) {
     c->add_option("--refinement-iterations", a.options.reexpand.refinement_iterations,
                   "HRsR: flip passes around each split vertex")
         ->capture_default_str();
-    c->add_option("--threads", a.threads, "Worker threads; 0 = all cores")
-        ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+    add_threads_option(*c, a.threads);
     c->add_option("--report", a.report,
                   "Write a JSON report (counts, topology, dropped points, timings)");
     c->add_flag("-q,--quiet", a.quiet, "No progress bar or summary");
@@ -73,13 +72,6 @@ CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& a) {
 }
 
 namespace {
-
-nlohmann::json genus_of_closed_components(const MeshStats& m) {
-    nlohmann::json genus = nlohmann::json::array();
-    for (const ComponentTopology& c : m.components)
-        if (c.closed()) genus.push_back(c.genus());
-    return genus;
-}
 
 nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionReport& r) {
     const MeshStats& m = r.mesh;
@@ -183,14 +175,12 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
                     r.coarse_points, e.replayed, e.records, e.failed_no_pair + e.failed_crossings,
                     e.merged_by_l_min, e.unresolved_crossings);
     }
-    std::string genus;
-    for (const ComponentTopology& c : m.components)
-        if (c.closed()) genus += (genus.empty() ? "" : ", ") + std::to_string(c.genus());
+    const std::string genus = genus_of_closed_components_text(m);
     std::printf(
         "  %zu components (genus of closed ones: %s), %zu handles; boundary: %zu edges in %zu "
         "loops; non-manifold: %zu edges, %zu vertices\n",
-        m.components.size(), genus.empty() ? "none" : genus.c_str(), r.handles, m.boundary_edges,
-        m.boundary_loops, m.non_manifold_edges, m.non_manifold_vertices);
+        m.components.size(), genus.c_str(), r.handles, m.boundary_edges, m.boundary_loops,
+        m.non_manifold_edges, m.non_manifold_vertices);
     double total = 0;
     for (const auto& t : r.timings) total += t.second;
     std::printf("  %.2f s, peak memory %.0f MB\n", total, double(peak_memory_bytes()) / 1e6);

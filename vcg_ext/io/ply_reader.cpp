@@ -1,10 +1,13 @@
-// PLY point reader: ascii and binary (both endiannesses), any element layout. Reads only the
-// vertex element's x/y/z (and nx/ny/nz when all three exist); everything else is skipped.
+// PLY reader: ascii and binary (both endiannesses), any element layout. Reads the vertex
+// element's x/y/z (and nx/ny/nz when all three exist) and, for meshes, the face element's
+// vertex_indices (or vertex_index) list; everything else is skipped.
+#include "io/mesh_reader.h"
 #include "io/point_set_reader.h"
 #include "io/text_parsing.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <optional>
@@ -314,6 +317,7 @@ void HeaderParser::parse_property(detail::Tokens& tokens) {
 // Vertex layout
 
 constexpr int kAbsent = -1;
+constexpr std::size_t kNoList = std::numeric_limits<std::size_t>::max();
 
 /// Where x y z nx ny nz are among the vertex properties.
 struct VertexLayout {
@@ -447,12 +451,19 @@ public:
 
     void skip_element(const Element& element);
     void read_vertices(const Element& vertex, const VertexLayout& layout, PointSet& points);
+    /// Reads one item property by property (needed when it has lists); values[targets[i]]
+    /// receives property i when targets[i] != kAbsent, and `list` the items of the list
+    /// property `list_property` (if any). Throws a "truncated" error if the data ends first.
+    void read_item(const Element& element, std::uint64_t item, const std::vector<int>& targets,
+                   double* values, std::size_t list_property, std::vector<double>* list) {
+        if (!try_read_item(element, item, targets, values, list_property, list))
+            truncated(element, item);
+    }
 
 private:
-    /// Reads one item property by property (needed when it has lists); values[targets[i]]
-    /// receives property i when targets[i] != kAbsent. False if the data ends first.
-    bool read_item(const Element& element, std::uint64_t item, const std::vector<int>& targets,
-                   double* values);
+    bool try_read_item(const Element& element, std::uint64_t item, const std::vector<int>& targets,
+                       double* values, std::size_t list_property = kNoList,
+                       std::vector<double>* list = nullptr);
     void read_fixed_vertices(const Element& vertex, const VertexLayout& layout, PointSet& points);
     [[noreturn]] void truncated(const Element& element, std::uint64_t item) const {
         if (src_.read_failed()) fail(name_, "read error in " + item_label(element, item));
@@ -469,7 +480,7 @@ void BinaryReader::skip_element(const Element& element) {
     if (element.has_lists()) {
         const std::vector<int> none(element.properties.size(), kAbsent);
         for (std::uint64_t i = 0; i < element.count; ++i) {
-            if (!read_item(element, i, none, nullptr)) truncated(element, i);
+            if (!try_read_item(element, i, none, nullptr)) truncated(element, i);
         }
         return;
     }
@@ -481,8 +492,9 @@ void BinaryReader::skip_element(const Element& element) {
     if (skipped < items * size || items < element.count) truncated(element, skipped / size);
 }
 
-bool BinaryReader::read_item(const Element& element, std::uint64_t item,
-                             const std::vector<int>& targets, double* values) {
+bool BinaryReader::try_read_item(const Element& element, std::uint64_t item,
+                                 const std::vector<int>& targets, double* values,
+                                 std::size_t list_property, std::vector<double>* list) {
     for (std::size_t i = 0; i < element.properties.size(); ++i) {
         const Property& property = element.properties[i];
         if (!property.is_list) {
@@ -503,6 +515,16 @@ bool BinaryReader::read_item(const Element& element, std::uint64_t item,
                             "'");
         }
         src_.consume(count_size);
+        if (i == list_property && list != nullptr) {
+            const std::size_t size = size_of(property.type);
+            list->clear();
+            for (std::uint64_t j = 0, n = static_cast<std::uint64_t>(count); j < n; ++j) {
+                if (!src_.ensure(size)) return false;
+                list->push_back(load_scalar(src_.data(), property.type, swap_));
+                src_.consume(size);
+            }
+            continue;
+        }
         const auto bytes = static_cast<std::uint64_t>(count) * size_of(property.type);
         if (src_.skip(bytes) != bytes) return false;
     }
@@ -520,7 +542,7 @@ void BinaryReader::read_vertices(const Element& vertex, const VertexLayout& layo
     const std::vector<int> targets = layout.targets(vertex.properties.size());
     double values[6] = {};
     for (std::uint64_t i = 0; i < vertex.count; ++i) {
-        if (!read_item(vertex, i, targets, values)) truncated(vertex, i);
+        if (!try_read_item(vertex, i, targets, values)) truncated(vertex, i);
         store(points, values, layout.wanted);
     }
 }
@@ -560,10 +582,12 @@ public:
 
     void skip_element(const Element& element);
     void read_vertices(const Element& vertex, const VertexLayout& layout, PointSet& points);
+    /// As BinaryReader::read_item.
+    void read_item(const Element& element, std::uint64_t item, const std::vector<int>& targets,
+                   double* values, std::size_t list_property = kNoList,
+                   std::vector<double>* list = nullptr);
 
 private:
-    void read_item(const Element& element, std::uint64_t item, const std::vector<int>& targets,
-                   double* values);
     /// The next token, or a "truncated" error naming the item.
     std::string_view token(const Element& element, std::uint64_t item);
     bool next_token(std::string_view& token);
@@ -634,7 +658,8 @@ double AsciiReader::number(std::string_view token, Type type, const Element& ele
 }
 
 void AsciiReader::read_item(const Element& element, std::uint64_t item,
-                            const std::vector<int>& targets, double* values) {
+                            const std::vector<int>& targets, double* values,
+                            std::size_t list_property, std::vector<double>* list) {
     for (std::size_t i = 0; i < element.properties.size(); ++i) {
         const Property& property = element.properties[i];
         if (!property.is_list) {
@@ -650,8 +675,12 @@ void AsciiReader::read_item(const Element& element, std::uint64_t item,
                             quote(count_token) + " (" + item_label(element, item) + ", property '" +
                             property.name + "')");
         }
+        std::vector<double>* const values_out = i == list_property ? list : nullptr;
+        if (values_out != nullptr) values_out->clear();
         for (std::uint64_t j = 0; j < count; ++j) {
-            number(token(element, item), property.type, element, item, property);
+            const double value =
+                number(token(element, item), property.type, element, item, property);
+            if (values_out != nullptr) values_out->push_back(value);
         }
     }
 }
@@ -675,32 +704,109 @@ void AsciiReader::read_vertices(const Element& vertex, const VertexLayout& layou
     }
 }
 
-PointSet read_ply_unguarded(std::istream& in, const std::string& name) {
-    ByteSource src(in);
-    const Header header = HeaderParser(name).parse(src);
+// ---------------------------------------------------------------------------------------------
+// Faces
+
+/// Where the corner list of a face is: "vertex_indices" (or "vertex_index"), a list.
+std::size_t face_list_property(const Element& face, const std::string& name) {
+    for (const char* wanted : {"vertex_indices", "vertex_index"})
+        for (std::size_t i = 0; i < face.properties.size(); ++i)
+            if (face.properties[i].name == wanted) {
+                if (!face.properties[i].is_list)
+                    fail(name, std::string("face property '") + wanted + "' is not a list");
+                return i;
+            }
+    fail(name, "the face element has no 'vertex_indices' list");
+}
+
+/// Appends the polygon `corners` (checked: integers >= 0) as a fan of triangles.
+void append_polygon(const std::vector<double>& corners, const Element& face, std::uint64_t item,
+                    const std::string& name, MeshFile& mesh) {
+    if (corners.size() < 3)
+        fail(name, item_label(face, item) + " has " + std::to_string(corners.size()) +
+                       " corners (a face needs at least 3)");
+    std::vector<std::uint32_t> v(corners.size());
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+        const double c = corners[k];
+        if (!(c >= 0 && c < 4294967295.0 && c == std::floor(c)))
+            fail(name, item_label(face, item) + " has an invalid vertex index " +
+                           std::to_string(static_cast<long long>(c)));
+        v[k] = static_cast<std::uint32_t>(c);
+    }
+    if (v.size() > 3) ++mesh.polygons_triangulated;
+    for (std::size_t k = 1; k + 1 < v.size(); ++k) mesh.triangles.push_back({v[0], v[k], v[k + 1]});
+}
+
+template <class Reader>
+void read_faces(Reader& reader, const Element& face, const std::string& name, MeshFile& mesh) {
+    const std::size_t list = face_list_property(face, name);
+    const std::vector<int> none(face.properties.size(), kAbsent);
+    std::vector<double> corners;
+    for (std::uint64_t i = 0; i < face.count; ++i) {
+        reader.read_item(face, i, none, nullptr, list, &corners);
+        append_polygon(corners, face, i, name, mesh);
+    }
+}
+
+/// Reads the vertices and, if `faces` is given, the triangles (elements in file order).
+template <class Reader>
+void read_elements(Reader& reader, const Header& header, const std::string& name, PointSet& points,
+                   MeshFile* faces) {
     const auto vertex = std::find_if(header.elements.begin(), header.elements.end(),
                                      [](const Element& e) { return e.name == "vertex"; });
     if (vertex == header.elements.end()) fail(name, "the header has no 'vertex' element");
     const VertexLayout layout = vertex_layout(*vertex, name);
-
-    PointSet points;
     points.precision = layout.precision;
+    bool face_read = false;
+    for (auto e = header.elements.begin(); e != header.elements.end(); ++e) {
+        if (e == vertex) {
+            reader.read_vertices(*vertex, layout, points);
+            if (faces == nullptr) return; // later elements (faces, ...) are not needed
+        } else if (faces != nullptr && e->name == "face" && !face_read) {
+            read_faces(reader, *e, name, *faces);
+            face_read = true;
+        } else {
+            reader.skip_element(*e);
+        }
+    }
+}
+
+void read_ply_unguarded(std::istream& in, const std::string& name, PointSet& points,
+                        MeshFile* faces) {
+    ByteSource src(in);
+    const Header header = HeaderParser(name).parse(src);
     if (header.format == Format::Ascii) {
         AsciiReader reader(src, header.line_count, name);
-        for (auto e = header.elements.begin(); e != vertex; ++e) reader.skip_element(*e);
-        reader.read_vertices(*vertex, layout, points);
+        read_elements(reader, header, name, points, faces);
     } else {
         BinaryReader reader(src, header.format, name);
-        for (auto e = header.elements.begin(); e != vertex; ++e) reader.skip_element(*e);
-        reader.read_vertices(*vertex, layout, points);
+        read_elements(reader, header, name, points, faces);
     }
-    return points; // later elements (faces, ...) are not needed
 }
 
 } // namespace
 
 PointSet read_ply(std::istream& in, const std::string& name) {
-    return detail::guarded_read(name, [&] { return read_ply_unguarded(in, name); });
+    return detail::guarded_read(name, [&] {
+        PointSet points;
+        read_ply_unguarded(in, name, points, nullptr);
+        return points;
+    });
+}
+
+MeshFile read_ply_mesh(std::istream& in, const std::string& name) {
+    return detail::guarded_read(name, [&] {
+        MeshFile mesh;
+        read_ply_unguarded(in, name, mesh.points, &mesh);
+        const std::size_t n = mesh.points.size();
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+            for (std::uint32_t v : mesh.triangles[t])
+                if (v >= n)
+                    fail(name, "triangle " + std::to_string(t + 1) + " refers to vertex " +
+                                   std::to_string(v) + ", but there are only " + std::to_string(n) +
+                                   " vertices");
+        return mesh;
+    });
 }
 
 } // namespace hrsr::io

@@ -139,7 +139,7 @@ private:
 /// Runs a reader and turns every exception into an IoError naming the file, so that callers
 /// only ever see IoError (e.g. bad_alloc from a header that lies about its size).
 template <class Read>
-PointSet guarded_read(const std::string& name, Read&& read) {
+auto guarded_read(const std::string& name, Read&& read) -> decltype(read()) {
     try {
         return read();
     } catch (const IoError&) {

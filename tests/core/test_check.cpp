@@ -1,0 +1,307 @@
+// hrsr check's measures on meshes with known properties.
+#include "errors.h"
+#include "mesh/check.h"
+#include "mesh/self_intersections.h"
+#include "mesh/surface_distance.h"
+
+#include "mesh_fixtures.h"
+#include "vcg_mesh.h"
+
+#include <gtest/gtest.h>
+
+namespace hrsr {
+namespace {
+
+using testing::TestMesh;
+
+MeshCheck check(const TestMesh& m, const CheckOptions& o = {}) {
+    return check_mesh({m.positions, m.triangles}, nullptr, nullptr, o, {});
+}
+
+std::uint32_t add_vertex(TestMesh& m, const Vec3& p) {
+    m.positions.push_back(p);
+    return std::uint32_t(m.positions.size() - 1);
+}
+
+TEST(Check, ClosedSphereIsGenusZeroWithoutBoundary) {
+    const MeshCheck c = check(testing::uv_sphere());
+    EXPECT_EQ(c.topology.vertices, 2u + 15u * 32u);
+    EXPECT_EQ(c.topology.faces, 2u * 32u * 15u);
+    EXPECT_EQ(c.topology.boundary_edges, 0u);
+    EXPECT_EQ(c.topology.boundary_loops, 0u);
+    EXPECT_EQ(c.topology.non_manifold_edges, 0u);
+    EXPECT_EQ(c.topology.non_manifold_vertices, 0u);
+    ASSERT_EQ(c.topology.components.size(), 1u);
+    EXPECT_TRUE(c.topology.components[0].closed());
+    EXPECT_EQ(c.topology.components[0].genus(), 0);
+    EXPECT_TRUE(c.coherently_oriented());
+    EXPECT_EQ(c.faces.degenerate_faces, 0u);
+    EXPECT_EQ(c.faces.duplicate_faces, 0u);
+    ASSERT_TRUE(c.self_intersecting_pairs.has_value());
+    EXPECT_EQ(*c.self_intersecting_pairs, 0u);
+    // The angle of a pole triangle at the pole, cos = ((1 + c) cos(2π/32) + 1 − c) / 2 with
+    // c = cos(π/16), is an upper bound of the smallest angle (the narrow quads next to the
+    // poles have smaller ones); no triangle is thinner than 10°.
+    const double c16 = std::cos(M_PI / 16);
+    const double pole = std::acos(((1 + c16) * std::cos(M_PI / 16) + 1 - c16) / 2) * 180 / M_PI;
+    EXPECT_LE(c.faces.min_angle.min, pole + 1e-9);
+    EXPECT_GE(c.faces.min_angle.min, 10.0);
+    EXPECT_EQ(c.faces.min_angle.faces, c.topology.faces);
+    EXPECT_EQ(c.faces.min_angle.below_10_degrees, 0u);
+}
+
+TEST(Check, TorusHasGenusOne) {
+    const MeshCheck c = check(testing::torus());
+    ASSERT_EQ(c.topology.components.size(), 1u);
+    EXPECT_TRUE(c.topology.components[0].closed());
+    EXPECT_EQ(c.topology.components[0].genus(), 1);
+    EXPECT_EQ(c.topology.boundary_edges, 0u);
+    EXPECT_TRUE(c.coherently_oriented());
+    EXPECT_EQ(*c.self_intersecting_pairs, 0u);
+}
+
+TEST(Check, PatchHasOneBoundaryLoop) {
+    const MeshCheck c = check(testing::square_patch(8));
+    EXPECT_EQ(c.topology.boundary_edges, 32u);
+    EXPECT_EQ(c.topology.boundary_loops, 1u);
+    ASSERT_EQ(c.topology.components.size(), 1u);
+    EXPECT_FALSE(c.topology.components[0].closed());
+    EXPECT_EQ(c.topology.components[0].genus(), 0);
+    EXPECT_NEAR(c.faces.min_angle.min, 45.0, 1e-9);
+    EXPECT_NEAR(c.faces.min_angle.median, 45.0, 1e-9);
+    EXPECT_EQ(*c.self_intersecting_pairs, 0u);
+}
+
+TEST(Check, TwoComponentsAreCountedSeparately) {
+    TestMesh m = testing::uv_sphere();
+    const TestMesh t = testing::shifted(testing::torus(), Vec3(5, 0, 0));
+    const auto offset = std::uint32_t(m.positions.size());
+    m.positions.insert(m.positions.end(), t.positions.begin(), t.positions.end());
+    for (Triangle f : t.triangles) {
+        for (std::uint32_t& v : f) v += offset;
+        m.triangles.push_back(f);
+    }
+    const MeshCheck c = check(m);
+    ASSERT_EQ(c.topology.components.size(), 2u);
+    EXPECT_EQ(c.topology.components[0].genus(), 0);
+    EXPECT_EQ(c.topology.components[1].genus(), 1);
+}
+
+TEST(Check, DuplicatedFaceIsFoundNotReportedAsIntersection) {
+    TestMesh m = testing::square_patch(4);
+    m.triangles.push_back(m.triangles[5]);
+    const Triangle& f = m.triangles[9];
+    m.triangles.push_back({f[0], f[2], f[1]}); // the other winding is a duplicate too
+    const MeshCheck c = check(m);
+    EXPECT_EQ(c.faces.duplicate_faces, 2u);
+    EXPECT_EQ(c.faces.degenerate_faces, 0u);
+    EXPECT_GT(c.topology.non_manifold_edges, 0u); // three triangles on its edges
+    EXPECT_EQ(*c.self_intersecting_pairs, 0u);
+}
+
+TEST(Check, DuplicateThroughCoincidentVerticesIsFound) {
+    TestMesh m = testing::square_patch(2);
+    const Triangle f = m.triangles[0];
+    const std::uint32_t a = add_vertex(m, m.positions[f[0]]), b = add_vertex(m, m.positions[f[1]]),
+                        c = add_vertex(m, m.positions[f[2]]);
+    m.triangles.push_back({a, b, c});
+    const MeshCheck r = check(m);
+    EXPECT_EQ(r.coincident_vertices, 3u);
+    EXPECT_EQ(r.faces.duplicate_faces, 1u);
+    EXPECT_EQ(r.topology.components.size(), 2u); // by index, the copy is a separate piece
+}
+
+TEST(Check, DegenerateFacesAreFound) {
+    TestMesh m = testing::square_patch(2);
+    const std::uint32_t v0 = m.triangles[0][0], v1 = m.triangles[0][1];
+    m.triangles.push_back({v0, v0, v1}); // repeated index
+    const std::uint32_t a = add_vertex(m, Vec3(3, 0, 0)), b = add_vertex(m, Vec3(4, 0, 0)),
+                        c = add_vertex(m, Vec3(5, 0, 0));
+    m.triangles.push_back({a, b, c}); // collinear
+    const std::uint32_t d = add_vertex(m, Vec3(3, 3, 0)), e = add_vertex(m, Vec3(3, 3, 0)),
+                        g = add_vertex(m, Vec3(4, 3, 0));
+    m.triangles.push_back({d, e, g}); // two corners at one position
+    const MeshCheck r = check(m);
+    EXPECT_EQ(r.faces.degenerate_faces, 3u);
+    EXPECT_EQ(r.faces.repeated_vertex_faces, 1u);
+    EXPECT_EQ(r.faces.min_angle.faces, m.triangles.size() - 3);
+    EXPECT_EQ(*r.self_intersecting_pairs, 0u);
+}
+
+TEST(Check, ThinButValidTriangleIsNotDegenerate) {
+    EXPECT_FALSE(is_degenerate(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1e-6, 0)));
+    EXPECT_TRUE(is_degenerate(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 0, 0)));
+    EXPECT_TRUE(is_degenerate(Vec3(1, 2, 3), Vec3(1, 2, 3), Vec3(1, 2, 3)));
+}
+
+TEST(Check, FlippedFaceBreaksCoherentOrientation) {
+    TestMesh m = testing::square_patch(4);
+    EXPECT_TRUE(check(m).coherently_oriented());
+    std::swap(m.triangles[10][1], m.triangles[10][2]); // an interior triangle
+    const MeshCheck c = check(m);
+    EXPECT_FALSE(c.coherently_oriented());
+    EXPECT_EQ(c.topology.inconsistently_oriented_edges, 3u);
+    EXPECT_EQ(c.topology.boundary_edges, 16u);
+}
+
+TEST(Check, TwoCrossingTrianglesAreOnePair) {
+    TestMesh m;
+    m.positions = {Vec3(0, 0, 0),  Vec3(2, 0, 0), Vec3(1, 2, 0),
+                   Vec3(1, 1, -1), Vec3(1, 1, 1), Vec3(1, 3, 0)};
+    m.triangles = {{0, 1, 2}, {3, 4, 5}};
+    const MeshCheck c = check(m);
+    ASSERT_TRUE(c.self_intersecting_pairs.has_value());
+    EXPECT_EQ(*c.self_intersecting_pairs, 1u);
+    ASSERT_EQ(c.first_intersecting_pairs.size(), 1u);
+    EXPECT_EQ(c.first_intersecting_pairs[0], TrianglePair(0, 1));
+
+    m.positions[3][0] = m.positions[4][0] = m.positions[5][0] = 3; // moved apart
+    EXPECT_EQ(*check(m).self_intersecting_pairs, 0u);
+}
+
+TEST(Check, PiercingTriangleIsFoundInALargeMesh) {
+    TestMesh m = testing::uv_sphere(40, 80);
+    const std::uint32_t a = add_vertex(m, Vec3(0.2, 0.1, 0)), b = add_vertex(m, Vec3(2, 0.1, 0)),
+                        c = add_vertex(m, Vec3(2, 0.1, 0.05));
+    m.triangles.push_back({a, b, c});
+    const std::vector<TrianglePair> pairs = self_intersecting_pairs(m.positions, m.triangles, {});
+    ASSERT_FALSE(pairs.empty());
+    for (const TrianglePair& p : pairs) EXPECT_EQ(p.second, m.triangles.size() - 1);
+    // The same pairs whatever the thread count.
+    EXPECT_EQ(self_intersecting_pairs(m.positions, m.triangles, {1, nullptr}), pairs);
+}
+
+TEST(Check, TrianglesOfThePairsAreThoseVcglibFinds) {
+    // Two overlapping spheres (a circle of crossings) and a triangle piercing one of them.
+    TestMesh m = testing::uv_sphere(20, 40);
+    const TestMesh other = testing::shifted(testing::uv_sphere(20, 40, 0.8), Vec3(0.9, 0.1, 0.05));
+    const auto offset = std::uint32_t(m.positions.size());
+    m.positions.insert(m.positions.end(), other.positions.begin(), other.positions.end());
+    for (Triangle f : other.triangles) {
+        for (std::uint32_t& v : f) v += offset;
+        m.triangles.push_back(f);
+    }
+    const std::uint32_t a = add_vertex(m, Vec3(-0.2, 0.1, 0.3)),
+                        b = add_vertex(m, Vec3(-2, 0, 0.3)), c = add_vertex(m, Vec3(-2, 0.3, 0.35));
+    m.triangles.push_back({a, b, c});
+    std::vector<std::uint32_t> ours;
+    for (const TrianglePair& p : self_intersecting_pairs(m.positions, m.triangles, {})) {
+        ours.push_back(p.first);
+        ours.push_back(p.second);
+    }
+    std::sort(ours.begin(), ours.end());
+    ours.erase(std::unique(ours.begin(), ours.end()), ours.end());
+
+    testing::VcgMesh v;
+    vcg::tri::Allocator<testing::VcgMesh>::AddVertices(v, m.positions.size());
+    for (std::size_t i = 0; i < m.positions.size(); ++i) v.vert[i].P() = m.positions[i];
+    vcg::tri::Allocator<testing::VcgMesh>::AddFaces(v, m.triangles.size());
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) v.face[t].V(k) = &v.vert[m.triangles[t][k]];
+    std::vector<std::uint32_t> theirs;
+    for (testing::VcgFace* f : testing::self_intersecting_faces(v))
+        theirs.push_back(std::uint32_t(vcg::tri::Index(v, f)));
+    std::sort(theirs.begin(), theirs.end());
+    EXPECT_GT(ours.size(), 40u);
+    EXPECT_EQ(ours, theirs);
+}
+
+TEST(Check, TouchingThroughVertexCopiesIsNotAnIntersection) {
+    // Two fans sharing one point through two vertex copies (as HRsR writes non-manifold points).
+    TestMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0),    Vec3(0, 1, 0),
+                   Vec3(0, 0, 0), Vec3(-1, 0, 0.5), Vec3(0, -1, 0.5)};
+    m.triangles = {{0, 1, 2}, {3, 4, 5}};
+    EXPECT_EQ(*check(m).self_intersecting_pairs, 0u);
+}
+
+TEST(Check, SelfIntersectionTestCanBeSkipped) {
+    CheckOptions o;
+    o.self_intersections = false;
+    EXPECT_FALSE(check(testing::torus(), o).self_intersecting_pairs.has_value());
+}
+
+TEST(Check, DistanceToItselfIsZero) {
+    const TestMesh m = testing::uv_sphere();
+    CheckOptions o;
+    o.distance.area_samples = 20000;
+    const MeshView self{m.positions, m.triangles};
+    const MeshCheck c = check_mesh(self, nullptr, &self, o, {});
+    ASSERT_TRUE(c.reference.has_value());
+    EXPECT_NEAR(c.reference->diagonal, std::sqrt(12.0), 1e-9);
+    EXPECT_LT(c.reference->distance.chamfer(), 1e-12);
+    EXPECT_LT(c.reference->distance.hausdorff(), 1e-12);
+    EXPECT_EQ(c.reference->distance.a_to_b.area_samples, 20000u);
+    EXPECT_EQ(c.reference->distance.a_to_b.vertices, m.positions.size());
+}
+
+TEST(Check, DistanceToAShiftedPatchIsTheShift) {
+    const TestMesh m = testing::square_patch(8);
+    const TestMesh r = testing::shifted(m, Vec3(0, 0, 0.01));
+    SurfaceDistanceOptions o;
+    o.area_samples = 5000;
+    const SurfaceDistance d =
+        surface_distance({m.positions, m.triangles}, {r.positions, r.triangles}, o, {});
+    EXPECT_NEAR(d.chamfer(), 0.01, 1e-12);
+    EXPECT_NEAR(d.hausdorff(), 0.01, 1e-12);
+    EXPECT_NEAR(d.a_to_b.mean, 0.01, 1e-12);
+    EXPECT_NEAR(d.b_to_a.max, 0.01, 1e-12);
+}
+
+TEST(Check, HausdorffToAShiftedSphereIsTheShift) {
+    const TestMesh m = testing::uv_sphere(32, 64);
+    const TestMesh r = testing::shifted(m, Vec3(0, 0, 0.05));
+    SurfaceDistanceOptions o;
+    o.area_samples = 20000;
+    const SurfaceDistance d =
+        surface_distance({m.positions, m.triangles}, {r.positions, r.triangles}, o, {});
+    // The poles are vertices and lie exactly 0.05 from the other sphere's pole, the farthest.
+    EXPECT_NEAR(d.hausdorff(), 0.05, 1e-3);
+    // Mean of |z| · 0.05 over the sphere ≈ 0.025 (point-to-sphere distance ≈ shift · |cos θ|).
+    EXPECT_NEAR(d.chamfer(), 0.025, 1e-3);
+    // Deterministic for a seed.
+    EXPECT_EQ(
+        surface_distance({m.positions, m.triangles}, {r.positions, r.triangles}, o, {}).chamfer(),
+        d.chamfer());
+}
+
+TEST(Check, VertexReferenceRatioCountsInputPointsOnVertices) {
+    const TestMesh m = testing::square_patch(4); // 25 vertices, diagonal sqrt(2)
+    PointSet input;
+    input.positions = m.positions;
+    input.positions[3] += Vec3(1e-8, 0, 0);         // within 1e-6 of the diagonal
+    input.positions.push_back(Vec3(0.5, 0.5, 0.1)); // not a vertex
+    input.positions.push_back(Vec3(0.1, 0.1, 0));   // on the surface but not a vertex
+    const MeshCheck c = check_mesh({m.positions, m.triangles}, &input, nullptr, {}, {});
+    ASSERT_TRUE(c.vertex_reference.has_value());
+    EXPECT_EQ(c.vertex_reference->input_points, 27u);
+    EXPECT_EQ(c.vertex_reference->present, 25u);
+    EXPECT_NEAR(c.vertex_reference->ratio(), 25.0 / 27.0, 1e-12);
+}
+
+TEST(Check, UnreferencedVerticesDoNotCountForRv) {
+    TestMesh m = testing::square_patch(1);
+    add_vertex(m, Vec3(7, 7, 7));
+    PointSet input;
+    input.positions = m.positions;
+    const MeshCheck c = check_mesh({m.positions, m.triangles}, &input, nullptr, {}, {});
+    EXPECT_EQ(c.topology.unreferenced_vertices, 1u);
+    EXPECT_EQ(c.vertex_reference->present, 4u);
+}
+
+TEST(Check, InvalidMeshesAreRejected) {
+    TestMesh m = testing::square_patch(1);
+    m.positions[0][1] = std::nan("");
+    EXPECT_THROW(check(m), InvalidInput);
+    TestMesh n = testing::square_patch(1);
+    n.triangles.push_back({0, 1, 99});
+    EXPECT_THROW(check(n), InvalidInput);
+    const TestMesh empty;
+    const TestMesh s = testing::square_patch(1);
+    const MeshView no_triangles{empty.positions, empty.triangles};
+    EXPECT_THROW(check_mesh({s.positions, s.triangles}, nullptr, &no_triangles, {}, {}),
+                 InvalidInput);
+}
+
+} // namespace
+} // namespace hrsr
