@@ -87,6 +87,10 @@ void FilterHrsrPlugin::log_summary(const hrsr::ReconstructionReport& r, double s
                 r.handles, seconds);
 }
 
+// A new layer is added; the input only changes its selection (select_dropped). MM_VERTNUMBER
+// turns off the dialog's Preview, which would add a layer at every change of a parameter.
+constexpr int kPostCondition = MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_VERTNUMBER;
+
 #if HRSR_ML_API >= 2022
 FilterHrsrPlugin::FilterClass FilterHrsrPlugin::getClass(const QAction*) const {
     return FilterClass(Remeshing | PointSet);
@@ -98,7 +102,7 @@ int FilterHrsrPlugin::getRequirements(const QAction*) {
     return MeshModel::MM_NONE;
 }
 int FilterHrsrPlugin::postCondition(const QAction*) const {
-    return MeshModel::MM_VERTFLAGSELECT;
+    return kPostCondition;
 }
 RichParameterList FilterHrsrPlugin::initParameterList(const QAction*, const MeshModel& m) {
     RichParameterList p;
@@ -132,9 +136,8 @@ int FilterHrsrPlugin::getPreConditions(QAction*) const {
 int FilterHrsrPlugin::getRequirements(QAction*) {
     return MeshModel::MM_NONE;
 }
-// A new layer is added; the input is only changed in its selection (select_dropped).
 int FilterHrsrPlugin::postCondition(QAction*) const {
-    return MeshModel::MM_VERTFLAGSELECT;
+    return kPostCondition;
 }
 void FilterHrsrPlugin::initParameterSet(QAction*, MeshModel& m, RichParameterList& par) {
     fill_parameters(m, par);

@@ -133,28 +133,24 @@ ReconstructionOptions read_options(const RichParameterList& par) {
 }
 
 QString help_html() {
-    QString rows;
+    QString list;
     for (const Doc& d : docs())
-        rows += "<tr><td><tt>" + d.name + "</tt>" + (d.advanced ? " (advanced)" : "") +
-                "</td><td>" + d.unit + "</td><td>" + d.default_text + "</td><td>" + d.meaning +
-                "</td></tr>";
-    return "Reconstructs a triangle mesh whose vertices are points of the current layer (almost "
-           "all "
-           "of them are kept), with explicit control of the topology. <b>HRsR</b> collapses the "
-           "cloud to a fraction p of its points, runs Rotation System Reconstruction on them and "
-           "replays the collapses as vertex splits; <b>RsR</b> runs on all points.<br>"
-           "The result is a new layer <i>HRsR mesh</i> with per-vertex normals (outward on "
-           "closed pieces); the input layer is not changed, except its selection with "
-           "<tt>select_dropped</tt>. On a layer with faces only its vertices are used; deleted "
-           "vertices are ignored. The log ends with the report: points used and dropped, r_v (the "
-           "share of input points that are vertices), boundary edges, genus, handles, time.<br>"
-           "<br>R. Cui, E. T. Gæde, E. Rotenberg, L. Kobbelt, J. A. Bærentzen: <i>Surface "
-           "Reconstruction Using Rotation Systems</i> (RsR), ACM Transactions on Graphics 43(6), "
-           "2024, arXiv:2402.01893.<br>R. Cui, C. Akarsubaşı, E. T. Gæde, E. Rotenberg, L. "
-           "Kobbelt, J. A. Bærentzen: <i>HRsR: Hierarchical Rotation System Reconstruction</i>, "
-           "arXiv:2606.07078.<br><br><table border=\"1\" cellpadding=\"2\"><tr><th>parameter</th>"
-           "<th>unit</th><th>default</th><th>meaning</th></tr>" +
-           rows + "</table>";
+        list += (list.isEmpty() ? "" : " · ") + QString("<tt>") + d.name + "</tt> (" + d.unit +
+                ", " + d.default_text + ")";
+    return "A triangle mesh over the points of the current layer (almost every point becomes a "
+           "vertex), with explicit control of the topology. <b>HRsR</b> collapses the cloud to a "
+           "fraction p of its points, runs Rotation System Reconstruction on them and replays the "
+           "collapses as vertex splits; <b>RsR</b> runs on all points. The result is a new layer "
+           "<i>HRsR mesh</i> with per-vertex normals; the input layer is left as it is, except "
+           "its selection with <tt>select_dropped</tt>. Faces and deleted vertices of the input "
+           "are ignored. The log ends with the report (points used and dropped, r_v, boundary, "
+           "genus, handles, time).<br>"
+           "R. Cui, E. T. Gæde, E. Rotenberg, L. Kobbelt, J. A. Bærentzen: <i>Surface "
+           "Reconstruction Using Rotation Systems</i>, ACM Transactions on Graphics 43(6), 2024, "
+           "arXiv:2402.01893 (RsR). R. Cui, C. Akarsubaşı, E. T. Gæde, E. Rotenberg, L. Kobbelt, "
+           "J. A. Bærentzen: <i>HRsR: Hierarchical Rotation System Reconstruction</i>, "
+           "arXiv:2606.07078.<br><small>Parameters (unit, default): " +
+           list + ". Advanced: all from <tt>method</tt> on.</small>";
 }
 
 } // namespace hrsr::plugin

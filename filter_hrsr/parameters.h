@@ -15,8 +15,8 @@ void add_parameters(const MeshModel& m, RichParameterList& par);
 /// The options the parameters ask for (not validated: hrsr::validate names a bad one).
 ReconstructionOptions read_options(const RichParameterList& par);
 
-/// The HTML help shown on top of the dialog: what the filter does, the papers, and a table of
-/// the parameters with their units and defaults.
+/// The HTML help shown on top of the dialog: what the filter does, the papers, and every
+/// parameter with its unit and default (the tooltips say more).
 QString help_html();
 
 } // namespace hrsr::plugin

@@ -22,8 +22,8 @@ PACKAGES=(
   clang-format
   # the MeshLab plugin: the installed MeshLab, and what its headers include
   meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev
-  # headless runs of meshlabserver / the GUI for plugin tests and screenshots
-  xvfb xauth
+  # headless runs of meshlabserver / the GUI for plugin tests and screenshots (scripts/screenshots.sh)
+  xvfb xauth xdotool imagemagick
 )
 
 missing=()
