@@ -7,8 +7,9 @@
 #                             in the input layer
 #   03_hrsr.png               the HRsR mesh of the bunny range scans (../shared/data; else the owl)
 #   04_hrsr_ballpivoting_poisson.png  HRsR, Ball Pivoting, Screened Poisson (left to right) on the
-#                             same cloud, in one view (scripts/meshlab_compare.sh)
-# usage: scripts/screenshots.sh [BUILD_DIR]
+#                             same cloud (every 8th bunny point), in one view (meshlab_compare.sh)
+# usage: scripts/screenshots.sh [BUILD_DIR]     (SCREENSHOT_CLOUD=cloud.ply: another cloud, with
+#        oriented normals, for 03 and 04)
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 BUILD=$(cd "${1:-${HRSR_BUILD_DIR:-$ROOT/build}}" && pwd)
@@ -52,22 +53,10 @@ stop_meshlab() {
 shot() { import -window root "$OUT/$1"; echo "screenshots.sh: $OUT/$1"; }
 click() { xdotool mousemove "$1" "$2" click 1; sleep "${3:-1}"; }
 
+DATA="python3 $ROOT/scripts/screenshot_data.py"
+
 # --- 01, 02: the dialog and the dropped points, on the owl with 60 random outliers -----------
-python3 - "$ROOT/data/owl_little.ply" "$WORK/owl_outliers.ply" <<'PY'
-import random, struct, sys
-data = open(sys.argv[1], 'rb').read()
-body = data.index(b'end_header\n') + 11
-n = int(data[:body].split(b'element vertex ')[1].split()[0])
-pts = [struct.unpack_from('<3f', data, body + 12 * i) for i in range(n)]
-lo = [min(p[a] for p in pts) for a in range(3)]
-hi = [max(p[a] for p in pts) for a in range(3)]
-random.seed(5)
-extra = [[lo[a] + (hi[a] - lo[a]) * (1.2 * random.random() - 0.1) for a in range(3)] for _ in range(60)]
-head = ('ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\n'
-        'property float y\nproperty float z\nend_header\n' % (n + len(extra))).encode()
-open(sys.argv[2], 'wb').write(head + data[body:body + 12 * n] +
-                              b''.join(struct.pack('<3f', *q) for q in extra))
-PY
+$DATA outliers "$ROOT/data/owl_little.ply" "$WORK/owl_outliers.ply" 60
 meshlab_on "$WORK/owl_outliers.ply"
 xdotool windowfocus --sync "$WINDOW"
 xdotool key ctrl+f; sleep 1                          # MeshLab's filter search box
@@ -83,39 +72,34 @@ click $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 23)) 12  # Apply (the owl takes a f
 click $((X + WIDTH / 4)) $((Y + HEIGHT - 23))        # Close
 click 888 146                                        # hide layer 1 (HRsR mesh): its eye icon
 click 968 114                                        # make layer 0 (the input) current
-for _ in 1 2 3; do click 1150 645 0.3; done          # larger points (Point Size slider)
+xdotool mousemove 1117 651 mousedown 1               # larger points: drag the Point Size slider
+for x in 1121 1125 1130; do xdotool mousemove "$x" 651; sleep 0.1; done
+xdotool mouseup 1; sleep 1
 shot 02_dropped_selected.png
 
-# --- 03, 04: HRsR, Ball Pivoting and Screened Poisson on the bunny range scans (or the owl) ----
-CLOUD="$ROOT/../shared/data/scans/bunny_rangescans_merged_normals.ply"
+# --- 03: HRsR (through the filter) on the bunny range scans, or the owl --------------------------
+CLOUD=${SCREENSHOT_CLOUD:-$ROOT/../shared/data/scans/bunny_rangescans_merged_normals.ply}
 if [ ! -f "$CLOUD" ]; then
   CLOUD="$WORK/owl_normals.ply"
   "$HRSR" normals "$ROOT/data/owl_little.ply" -o "$CLOUD" -q
 fi
-bash "$ROOT/scripts/meshlab_compare.sh" "$CLOUD" "$WORK/compare" "$PLUGIN"
-meshlab_on "$WORK/compare/hrsr.ply" 6
+sh "$ROOT/tests/plugin/hrsr_script.sh" > "$WORK/hrsr.mlx"
+( cd "$WORK" && xvfb-run -a "$WORK/prefix/bin/meshlabserver" -i "$CLOUD" -o "$WORK/hrsr.ply" -m vn \
+    -s "$WORK/hrsr.mlx" > "$WORK/hrsr.log" 2>&1 ) || { cat "$WORK/hrsr.log" >&2; exit 1; }
+meshlab_on "$WORK/hrsr.ply" 6
 shot 03_hrsr.png
-# One project with the three meshes side by side (x offsets), so they share one view and light.
-python3 - "$WORK/compare" "$WORK/side_by_side.mlp" <<'PY'
-import struct, sys
-def x_range(path):
-    data = open(path, 'rb').read()
-    body = data.index(b'end_header\n') + 11
-    head = data[:body].decode()
-    n = int(head.split('element vertex ')[1].split()[0])
-    stride = 4 * head.split('element vertex')[1].split('element')[0].count('property float')
-    xs = [struct.unpack_from('<f', data, body + stride * i)[0] for i in range(n)]
-    return min(xs), max(xs)
-names = ['hrsr', 'ball_pivoting', 'poisson']
-ranges = [x_range('%s/%s.ply' % (sys.argv[1], m)) for m in names]
-step = 1.1 * max(hi - lo for lo, hi in ranges)
-meshes = ''.join(
-    ' <MLMesh label="%s" filename="%s/%s.ply" visible="1">\n  <MLMatrix44>\n'
-    '1 0 0 %g \n0 1 0 0 \n0 0 1 0 \n0 0 0 1 \n</MLMatrix44>\n </MLMesh>\n'
-    % (m, sys.argv[1], m, k * step) for k, m in enumerate(names))
-open(sys.argv[2], 'w').write('<!DOCTYPE MeshLabDocument>\n<MeshLabProject>\n <MeshGroup>\n' +
-                             meshes + ' </MeshGroup>\n <RasterGroup/>\n</MeshLabProject>\n')
-PY
+
+# --- 04: HRsR, Ball Pivoting, Screened Poisson side by side (scripts/meshlab_compare.sh) ------
+# on every 8th point of a cloud over 100,000 points: Ball Pivoting takes over 25 minutes on the
+# whole bunny here
+SAME="$CLOUD"
+if [ "$(head -c 2000 "$CLOUD" | sed -n 's/^element vertex //p' | head -1)" -gt 100000 ]; then
+  SAME="$WORK/subsampled.ply"
+  $DATA subsample "$CLOUD" "$SAME" 8
+fi
+bash "$ROOT/scripts/meshlab_compare.sh" "$SAME" "$WORK/compare" "$PLUGIN"
+$DATA side_by_side "$WORK/side_by_side.mlp" "$WORK/compare/hrsr.ply" \
+  "$WORK/compare/ball_pivoting.ply" "$WORK/compare/poisson.ply"
 meshlab_on "$WORK/side_by_side.mlp" 8
 shot 04_hrsr_ballpivoting_poisson.png
 stop_meshlab
