@@ -13,5 +13,7 @@ rm -rf "$PREFIX"
 mkdir -p "$PREFIX/bin" "$PREFIX/lib/$MA/meshlab/plugins"
 cp /usr/bin/meshlab /usr/bin/meshlabserver "$PREFIX/bin/"   # copies: a symlink would resolve to /usr
 ln -s "$SYS/libmeshlab-common.so" "$PREFIX/lib/$MA/meshlab/"
-for p in "$SYS"/plugins/*.so; do ln -s "$p" "$PREFIX/lib/$MA/meshlab/plugins/"; done
+for p in "$SYS"/plugins/*.so; do   # not an installed copy of ours: the prefix gets its own
+  [ "$(basename "$p")" = libfilter_hrsr.so ] || ln -s "$p" "$PREFIX/lib/$MA/meshlab/plugins/"
+done
 [ "$PLUGIN" = - ] || ln -sf "$PLUGIN" "$PREFIX/lib/$MA/meshlab/plugins/$(basename "$PLUGIN")"
