@@ -3,6 +3,7 @@
 #pragma once
 
 #include "ml_compat.h"
+#include "reconstruction.h"
 
 #include <QObject>
 
@@ -54,6 +55,8 @@ private:
     void fill_parameters(const MeshModel& m, RichParameterList& par) const;
     /// Runs the reconstruction; throws std::exception subclasses with a message for the user.
     void run(MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb);
+    /// The report summary, last in the log.
+    void log_summary(const hrsr::ReconstructionReport& report, double seconds);
     template <typename... Ts>
     void log_message(const char* format, Ts&&... args) {
 #if HRSR_ML_API >= 2022

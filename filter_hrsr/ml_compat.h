@@ -2,6 +2,8 @@
 // Only 2020.09 (Debian bookworm) is built and run here; 2022.02+ compiles through the same names.
 #pragma once
 
+#include <utility>
+
 #if HRSR_ML_API >= 2022
 #include <common/mlexception.h>
 #include <common/plugins/interfaces/filter_plugin.h>
@@ -23,5 +25,17 @@ inline void ml_update_box_and_normals(MeshModel& m) {
     m.updateBoxAndNormals();
 #else
     m.UpdateBoxAndNormals();
+#endif
+}
+
+/// A parameter of type P (constructor arguments `args`); `advanced` ones are shown in the
+/// dialog's advanced group from 2022.02 on (2020.09 has no such group).
+template <typename P, typename... Args>
+P ml_parameter(bool advanced, Args&&... args) {
+#if HRSR_ML_API >= 2022
+    return P(std::forward<Args>(args)..., advanced);
+#else
+    (void)advanced;
+    return P(std::forward<Args>(args)...);
 #endif
 }

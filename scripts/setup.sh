@@ -22,8 +22,8 @@ PACKAGES=(
   clang-format
   # the MeshLab plugin: the installed MeshLab, and what its headers include
   meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev
-  # headless runs of meshlabserver / the GUI for plugin tests and screenshots
-  xvfb xauth
+  # headless runs of meshlabserver / the GUI for plugin tests and screenshots (scripts/screenshots.sh)
+  xvfb xauth xdotool imagemagick
 )
 
 missing=()
@@ -70,3 +70,6 @@ if [ ! -e "$DEPS/meshlab-src/vcglib/vcg" ] && [ ! -e "$DEPS/meshlab-src/src/vcgl
   ln -sfn "meshlab-$UP" "$DEPS/meshlab-src"
 fi
 echo "setup.sh: MeshLab source at .deps/meshlab-src ($(cat "$DEPS/meshlab-src/ML_VERSION" 2>/dev/null || echo '?'))"
+
+# MeshLab 2022.02 plugin headers (Debian trixie's source tarball) for the compile-only API check.
+bash "$ROOT/scripts/fetch_meshlab_2022.sh"
