@@ -104,10 +104,11 @@ public:
         }
         for (std::uint32_t c : candidates) { // the first copy (in id order) with a valid pair
             if (mesh_.isolated(c)) continue;
+            const Star star = mesh_.star(c);
             const SplitChoice choice =
-                choose_split(mesh_, c, r.active_before, r.latent_before, options_);
+                choose_split(mesh_, star, r.active_before, r.latent_before, options_);
             if (!choice.found) continue;
-            const std::uint32_t c2 = mesh_.split(c, choice.a, choice.b, r.latent_before);
+            const std::uint32_t c2 = mesh_.split(c, star, choice.a, choice.b, r.latent_before);
             vertex_node_.push_back(r.latent);
             vertices_of_.set(r.latent, c2);
             alias_[r.latent] = r.latent;

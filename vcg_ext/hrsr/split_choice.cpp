@@ -132,9 +132,8 @@ Score score(const std::vector<SFace*>& wedges, const Fan& new_fan, const Fan& ol
 
 } // namespace
 
-SplitChoice choose_split(const SplitMesh& mesh, std::uint32_t c, const Vec3& p_old,
+SplitChoice choose_split(const SplitMesh& mesh, const Star& star, const Vec3& p_old,
                          const Vec3& p_new, const ReexpandOptions& options) {
-    const Star star = mesh.star(c);
     const std::size_t d = star.neighbours.size();
     SplitChoice best, best_guarded;
     if (d < 2) return best;

@@ -161,9 +161,8 @@ Star SplitMesh::star(std::uint32_t vi) const {
     return s;
 }
 
-std::uint32_t SplitMesh::split(std::uint32_t ci, std::uint32_t ai, std::uint32_t bi,
+std::uint32_t SplitMesh::split(std::uint32_t ci, const Star& s, std::uint32_t ai, std::uint32_t bi,
                                const Vec3& position) {
-    const Star s = star(ci);
     const std::size_t d = s.neighbours.size();
     const std::size_t i =
         std::find(s.neighbours.begin(), s.neighbours.end(), ai) - s.neighbours.begin();

@@ -50,7 +50,12 @@ public:
     /// §8.5: splits c; the faces from spoke b counter-clockwise to spoke a go to the new vertex,
     /// placed at `position`, and triangles (c', c, b), (c, c', a) are added. a ≠ b must be
     /// neighbours of c. Returns c'. (V, E, F) change by (+1, +3, +2).
-    std::uint32_t split(std::uint32_t c, std::uint32_t a, std::uint32_t b, const Vec3& position);
+    std::uint32_t split(std::uint32_t c, std::uint32_t a, std::uint32_t b, const Vec3& position) {
+        return split(c, star(c), a, b, position);
+    }
+    /// The same with c's star given: `s` must be star(c), the mesh unchanged since.
+    std::uint32_t split(std::uint32_t c, const Star& s, std::uint32_t a, std::uint32_t b,
+                        const Vec3& position);
 
     /// Whether u and w share an edge (a boundary-safe walk around u).
     bool adjacent(std::uint32_t u, std::uint32_t w) const;
