@@ -34,7 +34,8 @@ void KnnIndex::nearest(const Vec3& p, int k, std::vector<Neighbour>& out) const 
     out.clear();
     if (!tree_ || k <= 0) return;
     const int wanted = int(std::min<std::size_t>(std::size_t(k), size_));
-    vcg::KdTree<double>::PriorityQueue queue;
+    // Reused per thread: vcg reallocates the queue's storage only when k changes.
+    thread_local vcg::KdTree<double>::PriorityQueue queue;
     tree_->kd.doQueryK(p, wanted, queue);
     out.reserve(std::size_t(queue.getNofElements()));
     for (int e = 0; e < queue.getNofElements(); ++e) {
