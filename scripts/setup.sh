@@ -20,6 +20,8 @@ PACKAGES=(
   build-essential cmake ninja-build dpkg-dev pkg-config git time python3
   libeigen3-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   clang-format
+  # sanitizer and fuzz stage (scripts/test_sanitizers.sh): libFuzzer and OpenMP for clang
+  clang-14 libclang-rt-14-dev libomp-14-dev
   # the MeshLab plugin: the installed MeshLab, and what its headers include
   meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev
   # headless runs of meshlabserver / the GUI for plugin tests and screenshots (scripts/screenshots.sh)

@@ -9,4 +9,13 @@ bash "$ROOT/scripts/build.sh"
 echo "test.sh: set-up and build took $(( $(date +%s) - start )) s"
 cd "$BUILD"
 ctest --output-on-failure --timeout 600
+echo "test.sh: ctest done after $(( $(date +%s) - start )) s"
+# Issue 7: Debug vs Release output, the ASan/UBSan build and the fuzzers. Always in CI; a local
+# run may skip them with HRSR_SKIP_EXTRA_TESTS=1 (they take several minutes).
+if [ "${CI:-}" = true ] || [ "${HRSR_SKIP_EXTRA_TESTS:-0}" != 1 ]; then
+  bash "$ROOT/scripts/test_determinism.sh"
+  bash "$ROOT/scripts/test_sanitizers.sh"
+else
+  echo "test.sh: HRSR_SKIP_EXTRA_TESTS=1: Debug/Release, sanitizer and fuzz stages skipped"
+fi
 echo "test.sh: total $(( $(date +%s) - start )) s"

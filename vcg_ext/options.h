@@ -132,6 +132,13 @@ inline constexpr int kMaxNeighbours = 192;
 /// A covariance whose middle eigenvalue is below this fraction of the largest is (nearly)
 /// collinear or a single point: its PCA normal is undefined (D-5 degenerate case).
 inline constexpr double kPcaDegenerateRatio = 1e-10;
+/// Points closer than this (normalised units: a fraction of the bounding-box diagonal) to an
+/// earlier point are merged into it like exact duplicates (D-25). Ten times the rotation-angle
+/// cut-off of D-1 (1e-12): closer pairs have no usable direction. Kept that small because a far
+/// outlier inflates the diagonal (x 1e6 in tests/cli: still 5e-5 absolute on a unit sphere).
+inline constexpr double kNearDuplicateDistance = 1e-11;
+/// Warn when more than this fraction of the input normals oppose their nearest neighbour's.
+inline constexpr double kOpposedNormalsWarningFraction = 0.1;
 /// Input normals shorter than this are unusable (zero) normals (§4.1).
 inline constexpr double kMinNormalLength = 1e-12;
 /// RsR candidate graph: a candidate edge is at most as long as the ⌊2k/3⌋-th neighbour (§5.1).

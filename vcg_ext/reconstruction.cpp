@@ -107,6 +107,11 @@ Reconstruction make_output(const PreparedCloud& cloud,
     return mesh;
 }
 
+// A phase boundary: progress, and the chance to cancel before the phase's work.
+void begin_phase(const Execution& exec, const std::string& phase) {
+    if (exec.progress) exec.progress->begin(phase);
+}
+
 // A mesh without a triangle is a failure to report, not a result to write.
 void require_triangles(const Reconstruction& mesh, const ReconstructionReport& report) {
     if (!mesh.triangles.empty()) return;
@@ -198,6 +203,7 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     report.timings = report.preprocess.timings;
     rsr::CloudMesh rsr_mesh = rsr::reconstruct_cloud(cloud, options, exec, observer);
     take_rsr_stats(rsr_mesh, report);
+    begin_phase(exec, "assembly");
     Timer timer(report.timings, "assembly");
     CompactMesh m = compact(cloud.size(), std::move(rsr_mesh.triangles));
     for (std::uint32_t p : m.unused) report.not_in_triangle.push_back(cloud.input_index[p]);
@@ -265,6 +271,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
                                 reexpansion_observer);
     }
 
+    begin_phase(exec, "assembly");
     Timer timer(report.timings, "assembly");
     // Fates of the points that are not their own vertex (§8.7).
     const std::vector<std::uint32_t> root = tree_roots(cloud.size(), collapsed.records);
@@ -298,6 +305,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
 Reconstruction reconstruct(const PointSet& input, const ReconstructionOptions& options,
                            const Execution& exec, ReconstructionReport& report,
                            rsr::Observer* observer) {
+    validate(options); // every option, also those the chosen method does not use
     if (options.method == Method::Rsr)
         return reconstruct_rsr(input, options.rsr, exec, report, observer);
     return reconstruct_hrsr(input, options, exec, report, observer);

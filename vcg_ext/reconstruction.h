@@ -64,7 +64,8 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
                                 rsr::Observer* observer = nullptr,
                                 ReexpansionObserver* reexpansion_observer = nullptr);
 
-/// Dispatches on options.method.
+/// Validates every option (InvalidOption names the first bad one, whichever method uses it), then
+/// dispatches on options.method.
 Reconstruction reconstruct(const PointSet& input, const ReconstructionOptions& options,
                            const Execution& exec, ReconstructionReport& report,
                            rsr::Observer* observer = nullptr);

@@ -158,7 +158,7 @@ CollapsedCloud collapse(const std::vector<Vec3>& positions, const std::vector<Ve
                 result.ran_out_of_edges = true; // §6.2: stop gracefully, report the ratio reached
                 break;
             }
-            if (exec.progress && (result.records.size() & 0xffff) == 0)
+            if (exec.progress && (result.records.size() & 0x3fff) == 0)
                 exec.progress->update(double(result.records.size()) / double(result.budget));
         }
     }

@@ -160,7 +160,7 @@ ReexpandedMesh replay_collapses(const std::vector<Vec3>& points, const std::vect
     if (exec.progress) exec.progress->begin("re-expansion");
     for (std::size_t k = records.size(); k-- > 0;) {
         const CollapseRecord& r = records[k];
-        if (exec.progress && (k & 0x3fff) == 0)
+        if (exec.progress && (k & 0x3ff) == 0) // often enough to cancel promptly
             exec.progress->update(double(records.size() - k) / double(records.size()));
         if (l_min > 0 && (r.active_before - r.latent_before).Norm() < l_min) {
             if (options.l_min_mode == LMinMode::Stop) {

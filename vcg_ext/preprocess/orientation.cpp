@@ -30,4 +30,13 @@ OrientationResult orient_normals(const CsrGraph& graph, const std::vector<Vec3>&
     return result;
 }
 
+std::size_t opposed_nearest_normals(const KnnIndex& index, const std::vector<Vec3>& normals,
+                                    const Execution& exec) {
+    const KnnTable nearest = knn_table(index, 1, exec);
+    std::size_t opposed = 0;
+    for (std::size_t i = 0; i < nearest.size(); ++i)
+        if (normals[i].dot(normals[nearest.row(i)[0]]) < 0) ++opposed;
+    return opposed;
+}
+
 } // namespace hrsr

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "graph/neighbour_graph.h"
+#include "knn.h"
 
 #include <vector>
 
@@ -26,5 +27,11 @@ struct OrientationResult {
 OrientationResult orient_normals(const CsrGraph& graph, const std::vector<Vec3>& positions,
                                  const std::vector<double>& neighbourhood_radius,
                                  std::vector<Vec3>& normals);
+
+/// Input normals are trusted to be oriented (§4.1). Counts the points whose nearest neighbour's
+/// normal points the other way (n_i · n_j < 0): the mark of unoriented or partly flipped input
+/// normals, or of two sheets closer than the sampling spacing. `index` is built on the points.
+std::size_t opposed_nearest_normals(const KnnIndex& index, const std::vector<Vec3>& normals,
+                                    const Execution& exec);
 
 } // namespace hrsr

@@ -69,6 +69,22 @@ void smooth(std::vector<Vec3>& positions, const std::vector<Vec3>& normals, cons
     report.smoothing_max_shift = s.max_shift;
 }
 
+// Input normals are used as given; half of them flipped gives two interleaved surfaces, one per
+// orientation (the normal filter keeps them apart). Not silent: warn and name the remedy.
+void check_input_orientation(const KnnIndex& index, const std::vector<Vec3>& normals,
+                             const Execution& exec, PreprocessReport& report) {
+    Phase phase(exec, report, "normal check");
+    report.opposed_input_normals = opposed_nearest_normals(index, normals, exec);
+    if (double(report.opposed_input_normals) <=
+        constants::kOpposedNormalsWarningFraction * double(normals.size()))
+        return;
+    report.warnings.push_back(
+        std::to_string(report.opposed_input_normals) + " of " + std::to_string(normals.size()) +
+        " input normals point away from their nearest neighbour's: they look inconsistently "
+        "oriented (re-estimate them: --reestimate-normals), or two sheets are closer than the "
+        "point spacing");
+}
+
 // A duplicate is wherever its representative went (kept, or dropped with it).
 void propagate_fates_to_duplicates(PreprocessReport& report) {
     for (std::size_t i = 0; i < report.fate.size(); ++i)
@@ -120,7 +136,10 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     // Schedule of §4.4: each round reads the previous round's positions through a kd-tree
     // built on them; with estimated normals they are re-estimated after each round.
     auto index = std::make_unique<KnnIndex>(cloud.smoothed);
-    if (estimated) cloud.normals = estimate(cloud.smoothed, *index, options, exec, report);
+    if (estimated)
+        cloud.normals = estimate(cloud.smoothed, *index, options, exec, report);
+    else
+        check_input_orientation(*index, cloud.normals, exec, report);
     // With input normals, HRsR needs no smoothing of the full cloud: it collapses the unsmoothed
     // positions and smooths the collapsed cloud (§7).
     if (tangent && (estimated || purpose == PrepareFor::Rsr)) {

@@ -38,6 +38,8 @@ struct PreprocessReport {
     int pca_neighbours = 0; ///< PCA neighbourhood used (true neighbours), 0 if no PCA ran
     std::size_t pca_degenerate =
         0; ///< points whose PCA normal was undefined and copied from the nearest valid one
+    std::size_t opposed_input_normals =
+        0; ///< input normals opposed to their nearest neighbour's (a warning above 10 %)
     std::size_t orientation_flips = 0; ///< estimated normals flipped by the MST propagation
     std::size_t orientation_components =
         0; ///< connected pieces oriented independently (one sign each)

@@ -72,7 +72,7 @@ FaceSplitStats split_faces(RotationSystem& rs, Faces& faces, GeometryCheck& geom
     FaceSplitStats stats;
     std::vector<LocalTriangle> closed;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
-        if (progress && (c & 0xffff) == 0) progress->update(double(c) / double(candidates.size()));
+        if (progress && (c & 0x3fff) == 0) progress->update(double(c) / double(candidates.size()));
         const std::uint32_t v1 = candidates[c].i, v2 = candidates[c].j;
         if (rs.adjacent(v1, v2)) continue; // MST edges, and edges already inserted
         if (faces.face_of_wedge(v1, v2) != faces.face_of_wedge(v2, v1)) {

@@ -54,13 +54,14 @@ void reconstruct_parts(const PreparedCloud& cloud, std::vector<ComponentResult>&
 
 void add_timings(std::vector<std::pair<std::string, double>>& total,
                  const std::vector<std::pair<std::string, double>>& more) {
-    for (const auto& [phase, seconds] : more) {
+    // Not a structured binding: C++17 lambdas cannot capture those (GCC allows it, clang not).
+    for (const std::pair<std::string, double>& timing : more) {
         auto it = std::find_if(total.begin(), total.end(),
-                               [&](const auto& e) { return e.first == phase; });
+                               [&](const auto& e) { return e.first == timing.first; });
         if (it == total.end())
-            total.emplace_back(phase, seconds);
+            total.push_back(timing);
         else
-            it->second += seconds;
+            it->second += timing.second;
     }
 }
 

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# Issue 7 item 5, two stages:
+#  1. an ASan + UBSan build (GCC, build-asan/) running the unit and end-to-end tests, except the
+#     clang-format check, the MeshLab plugin (not built: MeshLab's own code is not instrumented)
+#     and the slowest tests, listed in SLOW below (real scans; the large analytic HRsR cases);
+#  2. the libFuzzer targets of fuzz/ (clang-14, build-fuzz/), each fuzzed for
+#     $HRSR_FUZZ_SECONDS (default 60) seconds from tests/data/fuzz/<target>/. An input that
+#     crashes is copied there as crash-<hash> (commit it: ctest -R FuzzReplay replays it).
+# Assumes scripts/setup.sh ran. scripts/test.sh calls this (always when CI=true).
+# HRSR_SANITIZER_STAGES="asan fuzz" (default) selects the stages, for local runs.
+set -euo pipefail
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+ASAN=${HRSR_ASAN_BUILD_DIR:-$ROOT/build-asan}
+FUZZ=${HRSR_FUZZ_BUILD_DIR:-$ROOT/build-fuzz}
+FUZZ_SECONDS=${HRSR_FUZZ_SECONDS:-60}
+JOBS=$(nproc)
+STAGES=${HRSR_SANITIZER_STAGES:-asan fuzz}
+# -O1 and line tables only: compiling is most of this script's time; traces keep file:line.
+OPT=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG")
+SLOW='clang_format|meshlab_server|RealScans|Analytic/HrsrSurface|Hrsr.VertexCountFallsAsLMinGrows'
+start=$(date +%s)
+
+# 1. ASan + UBSan
+if [[ " $STAGES " == *" asan "* ]]; then
+SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
+cmake -S "$ROOT" -B "$ASAN" "${OPT[@]}" -DHRSR_BUILD_PLUGIN=OFF \
+  -DCMAKE_CXX_FLAGS="$SAN" -DCMAKE_EXE_LINKER_FLAGS="$SAN" >/dev/null
+cmake --build "$ASAN" -j"$JOBS" >/dev/null
+built=$(date +%s)
+echo "test_sanitizers.sh: ASan/UBSan build took $(( built - start )) s"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+( cd "$ASAN" && ctest --output-on-failure -j"$JOBS" --timeout 900 -E "$SLOW" )
+tested=$(date +%s)
+echo "test_sanitizers.sh: ASan/UBSan tests took $(( tested - built )) s"
+fi
+[[ " $STAGES " == *" fuzz "* ]] || exit 0
+tested=$(date +%s)
+
+# 2. libFuzzer. Warnings are not errors here: the strict build is GCC's (clang-14 also reports
+# an unused private field, EarCutter::geometry_ in vcg_ext/rsr/ear_triangulation.cpp).
+CC=clang-14 CXX=clang++-14 cmake -S "$ROOT" -B "$FUZZ" "${OPT[@]}" \
+  -DHRSR_BUILD_FUZZERS=ON -DHRSR_BUILD_APPS=OFF -DHRSR_BUILD_TESTS=OFF -DHRSR_BUILD_PLUGIN=OFF \
+  -DHRSR_WARNINGS_AS_ERRORS=OFF \
+  -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" \
+  >/dev/null
+TARGETS=(read_ply read_xyz read_obj reconstruct)
+cmake --build "$FUZZ" -j"$JOBS" "${TARGETS[@]/#/--target=fuzz_}" >/dev/null
+fuzz_built=$(date +%s)
+echo "test_sanitizers.sh: fuzz build took $(( fuzz_built - tested )) s"
+
+export ASAN_OPTIONS=detect_leaks=1
+fuzz() { # target: fuzz it; on a finding copy the input into tests/data/fuzz/<target>/
+  local t=$1 corpus="$FUZZ/corpus/$1" artifacts="$FUZZ/artifacts/$1/"
+  mkdir -p "$corpus" "$artifacts"
+  if "$FUZZ/fuzz/fuzz_$t" "$corpus" "$ROOT/tests/data/fuzz/$t" -max_total_time="$FUZZ_SECONDS" \
+       -timeout=20 -rss_limit_mb=2048 -max_len=4096 -artifact_prefix="$artifacts" \
+       -print_final_stats=1 >"$FUZZ/$t.log" 2>&1; then
+    echo "test_sanitizers.sh: fuzz_$t: clean ($(grep -o 'stat::number_of_executed_units: *[0-9]*' "$FUZZ/$t.log" | grep -o '[0-9]*$') runs)"
+  else
+    tail -40 "$FUZZ/$t.log" >&2
+    for f in "$artifacts"*; do
+      [ -f "$f" ] && cp "$f" "$ROOT/tests/data/fuzz/$t/crash-$(sha1sum "$f" | cut -c1-12)"
+    done
+    echo "test_sanitizers.sh: FAILED: fuzz_$t found a crash, copied to tests/data/fuzz/$t/" >&2
+    return 1
+  fi
+}
+status=0
+for ((i = 0; i < ${#TARGETS[@]}; i += JOBS)); do # as many fuzzers at once as cores
+  pids=()
+  for t in "${TARGETS[@]:i:JOBS}"; do fuzz "$t" & pids+=($!); done
+  for p in "${pids[@]}"; do wait "$p" || status=1; done
+done
+echo "test_sanitizers.sh: fuzzing took $(( $(date +%s) - fuzz_built )) s; total $(( $(date +%s) - start )) s"
+exit $status

@@ -1,0 +1,61 @@
+#include "preprocess/near_duplicates.h"
+
+#include <array>
+#include <cmath>
+#include <unordered_map>
+
+namespace hrsr {
+
+namespace {
+
+using Cell = std::array<std::int64_t, 3>;
+
+struct CellHash {
+    std::size_t operator()(const Cell& c) const {
+        std::uint64_t h = 1469598103934665603ull;
+        for (std::int64_t v : c) h = (h ^ std::uint64_t(v)) * 1099511628211ull;
+        return std::size_t(h);
+    }
+};
+
+} // namespace
+
+std::vector<std::uint32_t> near_duplicate_representatives(const std::vector<Vec3>& positions,
+                                                          double tolerance) {
+    const std::uint32_t n = std::uint32_t(positions.size());
+    std::vector<std::uint32_t> representative(n);
+    // Representatives only, chained per cell: head[cell] -> next[...] -> ... -> kNone.
+    constexpr std::uint32_t kNone = ~0u;
+    std::unordered_map<Cell, std::uint32_t, CellHash> head;
+    head.reserve(n);
+    std::vector<std::uint32_t> next(n, kNone);
+    const double squared = tolerance * tolerance;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Vec3& p = positions[i];
+        const Cell cell{std::int64_t(std::floor(p[0] / tolerance)),
+                        std::int64_t(std::floor(p[1] / tolerance)),
+                        std::int64_t(std::floor(p[2] / tolerance))};
+        std::uint32_t best = kNone;
+        for (std::int64_t a = -1; a <= 1; ++a)
+            for (std::int64_t b = -1; b <= 1; ++b)
+                for (std::int64_t c = -1; c <= 1; ++c) {
+                    const auto it = head.find({cell[0] + a, cell[1] + b, cell[2] + c});
+                    if (it == head.end()) continue;
+                    for (std::uint32_t r = it->second; r != kNone; r = next[r])
+                        if (r < best && (positions[r] - p).SquaredNorm() <= squared) best = r;
+                }
+        if (best != kNone) {
+            representative[i] = best;
+            continue;
+        }
+        representative[i] = i;
+        auto [it, inserted] = head.emplace(cell, i);
+        if (!inserted) {
+            next[i] = it->second;
+            it->second = i;
+        }
+    }
+    return representative;
+}
+
+} // namespace hrsr

@@ -1,0 +1,18 @@
+// Near-coincident points (D-25): points closer than a tolerance are merged like exact duplicates.
+#pragma once
+
+#include "point_set.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace hrsr {
+
+/// For each point, the earliest point within `tolerance` of it that is itself not merged
+/// (its representative), or the point itself. Points are visited in order, so a representative
+/// always precedes the points merged into it. Expected O(N) through a hash grid of cell
+/// `tolerance`; deterministic.
+std::vector<std::uint32_t> near_duplicate_representatives(const std::vector<Vec3>& positions,
+                                                          double tolerance);
+
+} // namespace hrsr
