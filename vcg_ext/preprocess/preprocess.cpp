@@ -129,8 +129,12 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     const bool estimated = report.normal_origin == NormalOrigin::Estimated;
     const bool tangent = options.distance == DistanceMode::Tangent;
     // HRsR with input normals collapses the unsmoothed positions and smooths only the collapsed
-    // cloud (§7): no kd-tree, no smoothed copy of the full cloud.
-    if (purpose == PrepareFor::Collapse && !estimated && !graph) return cloud;
+    // cloud (§7): no smoothed copy of the full cloud; its kd-tree only serves the normal check.
+    if (purpose == PrepareFor::Collapse && !estimated && !graph) {
+        const KnnIndex index(cloud.positions);
+        check_input_orientation(index, cloud.normals, exec, report);
+        return cloud;
+    }
     cloud.smoothed = cloud.positions;
 
     // Schedule of §4.4: each round reads the previous round's positions through a kd-tree
