@@ -243,19 +243,6 @@ std::size_t SplitMesh::valence(std::uint32_t v, bool& boundary) const {
     return boundary ? faces + 1 : faces;
 }
 
-bool SplitMesh::find_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const {
-    bool found = false;
-    const SVertex* target = &mesh_.vert[w];
-    for_each_face_any_order(u, [&](SFace* f, int k) {
-        if (f->cV((k + 1) % 3) != target) return false;
-        face = f;
-        z = k;
-        found = true;
-        return true;
-    });
-    return found;
-}
-
 bool SplitMesh::find_undirected_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const {
     const SVertex* target = &mesh_.vert[w];
     SFace* reverse = nullptr;

@@ -60,9 +60,6 @@ public:
     /// Whether u and w share an edge (a boundary-safe walk around u).
     bool adjacent(std::uint32_t u, std::uint32_t w) const;
 
-    /// The face with the directed edge u→w and that edge's index, found around u without
-    /// allocating; false if there is none.
-    bool find_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const;
     /// The edge {u, w} in either direction, preferring the face with u→w (one walk around u).
     bool find_undirected_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const;
 

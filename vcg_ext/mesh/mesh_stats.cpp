@@ -76,11 +76,6 @@ std::vector<std::uint32_t> label_components(const HalfEdges& edges, std::size_t 
 
 } // namespace
 
-std::vector<std::uint32_t>
-triangle_components(std::size_t n, const std::vector<Triangle>& triangles, std::size_t& count) {
-    return label_components(HalfEdges(n, triangles), triangles.size(), count);
-}
-
 MeshStats measure_mesh(std::size_t n, const std::vector<Triangle>& triangles,
                        std::vector<std::uint32_t>* triangle_component) {
     MeshStats s;

@@ -33,15 +33,9 @@ struct MeshStats {
 };
 
 /// Measures `triangles` over `vertex_count` vertices; optionally also gives each triangle's
-/// component (as triangle_components does).
+/// face-connected component (through shared edges; ids in order of first triangle).
 MeshStats measure_mesh(std::size_t vertex_count, const std::vector<Triangle>& triangles,
                        std::vector<std::uint32_t>* triangle_component = nullptr);
-
-/// Face-connected components (through shared edges): per triangle its component id, ids in
-/// order of first triangle.
-std::vector<std::uint32_t> triangle_components(std::size_t vertex_count,
-                                               const std::vector<Triangle>& triangles,
-                                               std::size_t& count);
 
 /// Signed volume enclosed by the triangles of one component (positive when they wind
 /// counter-clockwise seen from outside).
