@@ -38,11 +38,11 @@ void KnnIndex::nearest(const Vec3& p, int k, std::vector<Neighbour>& out) const 
     thread_local vcg::KdTree<double>::PriorityQueue queue;
     tree_->kd.doQueryK(p, wanted, queue);
     out.reserve(std::size_t(queue.getNofElements()));
-    for (int e = 0; e < queue.getNofElements(); ++e) {
-        const auto idx = std::uint32_t(queue.getIndex(e));
-        // Recomputed here in double: the distances are then exactly those the callers compare.
-        out.push_back({idx, (points_[idx] - p).SquaredNorm()});
-    }
+    // vcg's weights are SquaredNorm(p − q) in double: bit for bit (q − p).SquaredNorm(), which
+    // callers compute, so they are taken as they are. (Recomputing them read every neighbour's
+    // point again in input order, scattered in memory: 14 % of the normal pipeline's profile.)
+    for (int e = 0; e < queue.getNofElements(); ++e)
+        out.push_back({std::uint32_t(queue.getIndex(e)), queue.getWeight(e)});
     sort_neighbours(out);
 }
 

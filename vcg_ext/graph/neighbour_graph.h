@@ -21,12 +21,13 @@ struct CsrGraph {
 };
 
 /// The symmetric union of a kNN relation: {i, j} is an edge when j is among i's neighbours or
-/// i among j's (D-7). `n` is the number of points (the table may be empty for n < 2).
-CsrGraph symmetric_union(const KnnTable& table, std::size_t n, const Execution& exec);
+/// i among j's (D-7). `n` is the number of points (the table may be empty for n < 2). Taken by
+/// value: pass the table with std::move and its storage becomes the union's input, not a copy.
+CsrGraph symmetric_union(KnnTable table, std::size_t n, const Execution& exec);
 
 /// The same for any directed relation given as rows (row i: the targets of i, any order,
-/// self loops ignored).
-CsrGraph symmetric_union(const CsrGraph& directed, const Execution& exec);
+/// self loops ignored). By value as well: it is freed as soon as both directions are gathered.
+CsrGraph symmetric_union(CsrGraph directed, const Execution& exec);
 
 /// Union-find with path halving and union by size.
 class DisjointSets {

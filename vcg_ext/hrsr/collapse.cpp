@@ -31,12 +31,18 @@ public:
 
     void build_graph(int k, const Execution& exec) {
         { // the kd-tree and the kNN graphs are freed before the queue is filled (peak memory)
-            const KnnIndex index(x_);
-            const CsrGraph g = symmetric_union(knn_table(index, k, exec), x_.size(), exec);
-            for (std::uint32_t i = 0; i < g.size(); ++i)
+            KnnTable table;
+            {
+                const KnnIndex index(x_); // freed before the union's arrays are allocated
+                table = knn_table(index, k, exec);
+            }
+            const CsrGraph g = symmetric_union(std::move(table), x_.size(), exec);
+            for (std::uint32_t i = 0; i < g.size(); ++i) {
+                neighbours_[i].reserve(std::size_t(g.end(i) - g.begin(i))); // one allocation each
                 for (const std::uint32_t* j = g.begin(i); j != g.end(i); ++j)
                     if (n_[i].dot(n_[*j]) >= 0)
                         neighbours_[i].push_back(*j); // D-14: > 90° never linked
+            }
         }
         for (const auto& list : neighbours_) edges_ += list.size();
         edges_ /= 2;

@@ -4,7 +4,6 @@
 #include "options.h"
 
 #include <algorithm>
-#include <set>
 #include <utility>
 
 namespace hrsr::reexpand {
@@ -43,8 +42,8 @@ bool crosses(const TangentFrame& f, const Vec3& s, const Vec3& e, const Vec3& v1
     return o1 * o2 <= 0 && o3 * o4 <= 0 && !(o1 == 0 && o2 == 0); // collinear overlap is not a wall
 }
 
-std::vector<Link> links(const SplitMesh& m, std::uint32_t c, const Star& s) {
-    std::vector<Link> out;
+void links(const SplitMesh& m, std::uint32_t c, const Star& s, std::vector<Link>& out) {
+    out.clear();
     for (SFace* f : s.wedges) {
         if (!f) continue;
         for (int k = 0; k < 3; ++k)
@@ -53,7 +52,6 @@ std::vector<Link> links(const SplitMesh& m, std::uint32_t c, const Star& s) {
                 out.push_back({f, edge, m.vertex_of(f, edge), m.vertex_of(f, (edge + 1) % 3)});
             }
     }
-    return out;
 }
 
 bool link_is_border(const Link& l) {
@@ -73,9 +71,13 @@ bool removal_keeps_manifold(const Star& s, const Link& l) {
 
 bool has_crossing(const SplitMesh& m, std::uint32_t c, const Vec3& x_a, const Vec3& x_b,
                   const Vec3& normal) {
-    const Star s = m.star(c);
+    // Scratch reused from call to call (a few calls per split): no allocation on this path.
+    thread_local Star s;
+    thread_local std::vector<Link> fan;
+    m.star(c, s);
     const TangentFrame f = plane_at(m, c, s, normal);
-    for (const Link& l : links(m, c, s))
+    links(m, c, s, fan);
+    for (const Link& l : fan)
         if (crosses(f, x_a, x_b, m.position(l.v1), m.position(l.v2)) ||
             crosses(f, x_b, x_a, m.position(l.v1), m.position(l.v2)))
             return true;
@@ -85,23 +87,29 @@ bool has_crossing(const SplitMesh& m, std::uint32_t c, const Vec3& x_a, const Ve
 CrossingStats resolve_crossings(SplitMesh& m, std::uint32_t c, const Vec3& x_a, const Vec3& x_b,
                                 const Vec3& normal) {
     CrossingStats stats;
-    std::set<std::pair<std::uint32_t, std::uint32_t>> given_up; // crossings we cannot resolve
+    // Crossings we cannot resolve: a handful at most, so a vector searched linearly.
+    thread_local std::vector<std::pair<std::uint32_t, std::uint32_t>> given_up;
+    given_up.clear();
+    thread_local Star s;
+    thread_local std::vector<Link> fan;
     for (int round = 0;; ++round) {
         if (round == constants::kCrossingRounds) {
             stats.round_limit = true;
             break;
         }
-        const Star s = m.star(c);
+        m.star(c, s);
         const TangentFrame f = plane_at(m, c, s, normal);
-        const std::vector<Link> fan = links(m, c, s);
+        links(m, c, s, fan);
         bool changed = false;
         // x_a → x_b, then x_b → x_a; interior crossings first (flips), then boundary ones
         // (removal), as in the paper. One change per round, then look again.
         for (int direction = 0; direction < 2 && !changed; ++direction)
             for (int pass = 0; pass < 2 && !changed; ++pass)
                 for (const Link& l : fan) {
-                    const auto key = std::minmax(l.v1, l.v2);
-                    if (given_up.count(key) || link_is_border(l) != (pass == 1)) continue;
+                    const std::pair<std::uint32_t, std::uint32_t> key = std::minmax(l.v1, l.v2);
+                    if (std::find(given_up.begin(), given_up.end(), key) != given_up.end() ||
+                        link_is_border(l) != (pass == 1))
+                        continue;
                     const Vec3& from = direction == 0 ? x_a : x_b;
                     const Vec3& to = direction == 0 ? x_b : x_a;
                     if (!crosses(f, from, to, m.position(l.v1), m.position(l.v2))) continue;
@@ -112,7 +120,7 @@ CrossingStats resolve_crossings(SplitMesh& m, std::uint32_t c, const Vec3& x_a, 
                         m.remove_face(l.face);
                         ++stats.triangles_removed;
                     } else {
-                        given_up.insert(key);
+                        given_up.push_back(key);
                         ++stats.unresolved;
                         continue;
                     }

@@ -51,14 +51,15 @@ bool worth_flipping(const SplitMesh& m, SFace* f, int z, double small_cos) {
 }
 
 void pass(SplitMesh& m, std::vector<Edge>& edges, double small_cos, std::size_t& flips) {
-    // Stable sort by length: lengths computed once, ties kept in list order.
-    std::vector<std::pair<double, std::uint32_t>> order;
-    order.reserve(edges.size());
+    // Stable sort by length: lengths computed once, ties kept in list order. Scratch reused
+    // from call to call (three calls per split).
+    thread_local std::vector<std::pair<double, std::uint32_t>> order;
+    thread_local std::vector<Edge> sorted;
+    order.clear();
     for (std::uint32_t k = 0; k < edges.size(); ++k)
         order.emplace_back((m.position(edges[k].first) - m.position(edges[k].second)).Norm(), k);
     std::sort(order.begin(), order.end());
-    std::vector<Edge> sorted;
-    sorted.reserve(edges.size());
+    sorted.clear();
     for (const auto& entry : order) sorted.push_back(edges[entry.second]);
     edges.swap(sorted);
     for (auto it = edges.rbegin(); it != edges.rend(); ++it) {
@@ -79,8 +80,12 @@ void pass(SplitMesh& m, std::vector<Edge>& edges, double small_cos, std::size_t&
 } // namespace
 
 std::size_t improve_around(SplitMesh& m, std::uint32_t v, const ReexpandOptions& o) {
-    std::vector<Edge> one_ring, circle, two_ring;
-    const Star s = m.star(v);
+    thread_local std::vector<Edge> one_ring, circle, two_ring; // reused: one call per split
+    thread_local Star s;
+    one_ring.clear();
+    circle.clear();
+    two_ring.clear();
+    m.star(v, s);
     const std::size_t d = s.neighbours.size();
     for (std::size_t k = 0; k < d; ++k) {
         SFace* f = s.wedges[k]; // (v, q_k, q_k+1): holds v→q_k and q_k→q_k+1

@@ -104,7 +104,8 @@ public:
         }
         for (std::uint32_t c : candidates) { // the first copy (in id order) with a valid pair
             if (mesh_.isolated(c)) continue;
-            const Star star = mesh_.star(c);
+            Star& star = star_; // reused: no allocation per split
+            mesh_.star(c, star);
             const SplitChoice choice =
                 choose_split(mesh_, star, r.active_before, r.latent_before, options_);
             if (!choice.found) continue;
@@ -142,6 +143,7 @@ private:
     NodeVertices vertices_of_;
     std::vector<std::uint32_t> vertex_node_;
     std::vector<std::uint32_t> alias_;
+    Star star_;
 };
 
 } // namespace

@@ -58,8 +58,13 @@ struct Fan {
     std::vector<double> angle;
     std::vector<double> spoke_length; ///< |q_k − centre|, at least 1e-8 (D-2 units)
     std::vector<Joint> joint;         ///< at spoke k: wedges k−1 and k, when both are faces
-    Fan(const Vec3& centre, const std::vector<Vec3>& q, const std::vector<SFace*>& wedges,
-        const ReexpandOptions& o) {
+    // Refills the vectors (their storage is reused: one Fan per side per thread).
+    void assign(const Vec3& centre, const std::vector<Vec3>& q, const std::vector<SFace*>& wedges,
+                const ReexpandOptions& o) {
+        normal.clear();
+        angle.clear();
+        spoke_length.clear();
+        joint.clear();
         const std::size_t d = q.size();
         for (std::size_t w = 0; w < d; ++w) {
             const Tri t{{centre, q[w], q[(w + 1) % d]}};
@@ -81,8 +86,12 @@ struct Fan {
 struct NewTriangles {
     std::vector<Vec3> out_normal, in_normal;
     std::vector<double> out_angle, in_angle;
-    NewTriangles(const Vec3& p_old, const Vec3& p_new, const std::vector<Vec3>& q,
-                 const ReexpandOptions& o) {
+    void assign(const Vec3& p_old, const Vec3& p_new, const std::vector<Vec3>& q,
+                const ReexpandOptions& o) {
+        out_normal.clear();
+        in_normal.clear();
+        out_angle.clear();
+        in_angle.clear();
         for (const Vec3& spoke : q) {
             const Tri t_out{{p_new, p_old, spoke}}, t_in{{p_old, p_new, spoke}};
             out_normal.push_back(t_out.normal());
@@ -137,10 +146,15 @@ SplitChoice choose_split(const SplitMesh& mesh, const Star& star, const Vec3& p_
     const std::size_t d = star.neighbours.size();
     SplitChoice best, best_guarded;
     if (d < 2) return best;
-    std::vector<Vec3> q;
+    // Scratch reused from split to split: no allocation per split (there were about fifty).
+    thread_local std::vector<Vec3> q;
+    thread_local Fan new_fan, old_fan;
+    thread_local NewTriangles spokes;
+    q.clear();
     for (std::uint32_t v : star.neighbours) q.push_back(mesh.position(v));
-    const Fan new_fan(p_new, q, star.wedges, options), old_fan(p_old, q, star.wedges, options);
-    const NewTriangles spokes(p_old, p_new, q, options);
+    new_fan.assign(p_new, q, star.wedges, options);
+    old_fan.assign(p_old, q, star.wedges, options);
+    spokes.assign(p_old, p_new, q, options);
     for (std::size_t i = 0; i < d; ++i)
         for (std::size_t j = 0; j < d; ++j) {
             if (i == j) continue;

@@ -119,10 +119,12 @@ void SplitMesh::set_face_of(SFace* f) {
     for (int k = 0; k < 3; ++k) face_of_[index(f->V(k))] = f;
 }
 
-Star SplitMesh::star(std::uint32_t vi) const {
-    Star s;
+void SplitMesh::star(std::uint32_t vi, Star& s) const {
+    s.neighbours.clear();
+    s.wedges.clear();
+    s.boundary = false;
     SFace* start = face_of_[vi];
-    if (start == nullptr) return s;
+    if (start == nullptr) return;
     const SVertex* v = &mesh_.vert[vi];
     // Walk clockwise to the boundary (or all the way round).
     SFace* f = start;
@@ -158,7 +160,6 @@ Star SplitMesh::star(std::uint32_t vi) const {
         std::min_element(s.neighbours.begin(), s.neighbours.end()) - s.neighbours.begin();
     std::rotate(s.neighbours.begin(), s.neighbours.begin() + smallest, s.neighbours.end());
     std::rotate(s.wedges.begin(), s.wedges.begin() + smallest, s.wedges.end());
-    return s;
 }
 
 std::uint32_t SplitMesh::split(std::uint32_t ci, const Star& s, std::uint32_t ai, std::uint32_t bi,

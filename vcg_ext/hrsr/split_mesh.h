@@ -45,7 +45,14 @@ public:
     bool isolated(std::uint32_t v) const { return face_of_[v] == nullptr; }
 
     /// Neighbours in counter-clockwise order starting at the smallest id (D-10); empty if isolated.
-    Star star(std::uint32_t v) const;
+    Star star(std::uint32_t v) const {
+        Star s;
+        star(v, s);
+        return s;
+    }
+    /// The same into `out`, reusing its storage: the re-expansion calls this a few times per
+    /// split, and allocating two vectors each time was a measurable part of its cost.
+    void star(std::uint32_t v, Star& out) const;
 
     /// §8.5: splits c; the faces from spoke b counter-clockwise to spoke a go to the new vertex,
     /// placed at `position`, and triangles (c', c, b), (c, c', a) are added. a ≠ b must be

@@ -163,10 +163,11 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
         std::vector<double> radius(cloud.size(), 0.0);
         {
             Phase phase(exec, report, "neighbour graph");
-            const KnnTable table = knn_table(*index, options.k, exec);
+            KnnTable table = knn_table(*index, options.k, exec);
+            index.reset(); // the last kd-tree: free it before the union's big arrays
             for (std::size_t i = 0; i < table.size(); ++i)
                 radius[i] = (cloud.smoothed[table.row(i)[table.k - 1]] - cloud.smoothed[i]).Norm();
-            g = symmetric_union(table, cloud.size(), exec);
+            g = symmetric_union(std::move(table), cloud.size(), exec);
         }
         if (estimated) {
             Phase phase(exec, report, "normal orientation");

@@ -40,7 +40,7 @@ CandidateGraph build_candidate_graph(const ComponentCloud& cloud, const KnnIndex
         directed.adjacency.insert(directed.adjacency.end(), row.begin(), row.end());
         std::vector<std::uint32_t>().swap(row);
     }
-    g.graph = symmetric_union(directed, exec);
+    g.graph = symmetric_union(std::move(directed), exec);
 
     g.max_length.assign(n, 0.0);
     parallel_for(exec, n, [&](std::size_t i) {
