@@ -71,14 +71,31 @@ def table(runs):
     return "\n".join(rows)
 
 
+DATASET_ORDER = ["bunny", "dragon", "lion", "kitten", "owl"]
+
+
+def dataset_names(runs):
+    """Data sets in report order (whatever order a resumed run appended them in): the scans and
+    meshes first, then the scaling series by size."""
+    first = {}
+    for r in runs:
+        first.setdefault(r["dataset"], r)
+    return sorted(first, key=lambda d: (
+        first[d].get("series") is not None, first[d].get("points", 0)
+        if first[d].get("series") else DATASET_ORDER.index(d) if d in DATASET_ORDER else 99, d))
+
+
 def ordered(runs):
     return sorted(runs, key=lambda r: METHOD_ORDER.index(r["method"])
                   if r["method"] in METHOD_ORDER else 99)
 
 
-def save(plt, fig, ax, path):
+def save(plt, fig, ax, path, legend_outside=False):
     ax.grid(True, which="major", alpha=0.3)
-    ax.legend(fontsize=7)
+    if legend_outside:  # bar charts: a legend inside would cover the last group's bars
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    else:
+        ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -116,13 +133,13 @@ def plots(runs, plot_dir):
             made.append((name, f"{ylabel} against the number of points, dragon series "
                                "(log-log; failed or timed-out runs are missing)"))
     quality = [r for r in runs if r["status"] == "ok" and r.get("series") is None]
-    datasets = list(dict.fromkeys(r["dataset"] for r in quality))
+    datasets = dataset_names(quality)
     if quality:
         for key, ylabel, name, log in (
                 ("r_v", "r_v (% of input points that are vertices)", "rv_per_method.png", False),
                 ("boundary_edges", "boundary edges |E_b| (+1, log)", "boundary_per_method.png",
                  True)):
-            fig, ax = plt.subplots(figsize=(8, 4.5))
+            fig, ax = plt.subplots(figsize=(9.5, 4.5))
             width = 0.8 / max(1, len(methods))
             for i, m in enumerate(methods):
                 xs, ys = [], []
@@ -141,7 +158,7 @@ def plots(runs, plot_dir):
             if log:
                 ax.set_yscale("log")
             ax.set_ylabel(ylabel)
-            save(plt, fig, ax, plot_dir / name)
+            save(plt, fig, ax, plot_dir / name, legend_outside=True)
             made.append((name, f"{ylabel} per method and data set"))
     return made
 
@@ -160,8 +177,7 @@ def section(results, plot_files, plot_link_dir):
            "(within 1e-6 of the diagonal); Chamfer and Hausdorff relative to the reference's "
            f"bounding-box diagonal ({meta['check_samples']:,} area samples per surface plus "
            f"the vertices). Runs over {meta['timeout_s']:.0f} s are stopped (\"timeout\").", ""]
-    datasets = list(dict.fromkeys(r["dataset"] for r in runs))
-    for ds in datasets:
+    for ds in dataset_names(runs):
         mine = ordered([r for r in runs if r["dataset"] == ds])
         out += [f"### {mine[0]['label']}", "", table(mine), ""]
     for name, caption in plot_files:

@@ -261,7 +261,11 @@ class Runner:
             if m not in METHODS:
                 sys.exit(f"compare.py: unknown method {m} (known: {', '.join(METHODS)})")
         datasets = self.datasets()
-        done = {(r["dataset"], r["method"]) for r in self.results if r["status"] == "ok"}
+        # --resume: a run outside this call's data sets and methods stays as it was (failed and
+        # timed-out ones too: they are results); inside them, only successful runs are kept.
+        selected = {(ds.name, m) for ds in datasets for m in methods}
+        done = {(r["dataset"], r["method"]) for r in self.results
+                if r["status"] == "ok" or (r["dataset"], r["method"]) not in selected}
         self.results = [r for r in self.results if (r["dataset"], r["method"]) in done]
         for ds in datasets:
             for method in methods:
@@ -337,7 +341,9 @@ def main():
     p.add_argument("--timeout", type=float, default=3600, help="seconds per run")
     p.add_argument("--samples", type=int, default=200000,
                    help="hrsr check --samples (area samples per surface for the distances)")
-    p.add_argument("--resume", action="store_true", help="keep successful runs of results.json")
+    p.add_argument("--resume", action="store_true",
+                   help="keep the runs of results.json: all of those outside --datasets/--methods, "
+                        "the successful ones inside (the others run again)")
     p.add_argument("--keep-meshes", action="store_true", help="keep every output mesh")
     return Runner(p.parse_args()).main()
 
