@@ -1,4 +1,5 @@
 #include "errors.h"
+#include "preprocess/near_duplicates.h"
 #include "preprocess/sanitize.h"
 #include "samplers.h"
 
@@ -6,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 namespace hrsr {
 namespace {
@@ -108,6 +110,52 @@ TEST(Sanitize, ReestimateIgnoresInputNormals) {
     EXPECT_EQ(report.normal_origin, NormalOrigin::Estimated);
     EXPECT_TRUE(c.normals.empty());
     EXPECT_TRUE(report.warnings.empty());
+}
+
+// The grid search looks at 8 of the 27 neighbouring cells; the greedy answer must be the one of
+// an exhaustive search: each point's representative is the smallest earlier representative
+// within the tolerance, or itself. Points sit at exactly the tolerance, just inside and just
+// outside it, along every axis and diagonal, around cell corners and the middles of cells.
+TEST(NearDuplicates, GridSearchAgreesWithExhaustiveSearch) {
+    const double tolerance = 0.25;
+    std::mt19937 random(7);
+    std::uniform_int_distribution<int> grid(-6, 6);
+    std::uniform_int_distribution<int> pick(0, 7);
+    std::uniform_real_distribution<double> jitter(-1, 1);
+    const double offsets[] = {0.0,
+                              tolerance,
+                              tolerance * (1 - 1e-12),
+                              tolerance * (1 + 1e-12),
+                              tolerance / std::sqrt(3.0),
+                              0.5 * tolerance,
+                              1e-9,
+                              0.999 * tolerance};
+    std::vector<Vec3> points;
+    for (int k = 0; k < 3000; ++k) {
+        // Anchors on multiples of half a cell (corners and middles of the 2 x tolerance grid).
+        const Vec3 anchor(grid(random) * tolerance, grid(random) * tolerance,
+                          grid(random) * tolerance);
+        Vec3 direction(jitter(random), jitter(random), jitter(random));
+        if (k % 3 == 0) direction = Vec3(k % 2 ? 1 : -1, 0, 0); // along an axis
+        if (direction.Norm() == 0) direction = Vec3(1, 0, 0);
+        points.push_back(anchor + direction / direction.Norm() * offsets[pick(random)]);
+    }
+    const std::vector<std::uint32_t> fast = near_duplicate_representatives(points, tolerance);
+    std::vector<std::uint32_t> exhaustive(points.size());
+    std::size_t merged = 0;
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+        exhaustive[i] = i;
+        for (std::uint32_t r = 0; r < i; ++r)
+            if (exhaustive[r] == r &&
+                (points[r] - points[i]).SquaredNorm() <= tolerance * tolerance) {
+                exhaustive[i] = r;
+                ++merged;
+                break;
+            }
+    }
+    EXPECT_EQ(fast, exhaustive);
+    EXPECT_GT(merged, 1000u); // the case is not vacuous
+    EXPECT_LT(merged, points.size() - 500);
 }
 
 } // namespace

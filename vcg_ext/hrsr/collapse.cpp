@@ -12,22 +12,27 @@ namespace hrsr {
 
 namespace {
 
-// A queued edge, valid while both endpoints still have the versions they had when it was pushed
-// (lazy deletion: merging a node bumps its version, which invalidates all its old entries).
-struct QueuedEdge {
+// An edge key, totally ordered by (priority, lo, hi) (D-10).
+struct EdgeKey {
     double priority;
     std::uint32_t lo, hi;
-    std::uint32_t lo_version, hi_version;
-    bool operator>(const QueuedEdge& o) const {
-        return std::tie(priority, lo, hi) > std::tie(o.priority, o.lo, o.hi); // D-10
+    bool operator<(const EdgeKey& o) const {
+        return std::tie(priority, lo, hi) < std::tie(o.priority, o.lo, o.hi);
     }
+    bool touches(std::uint32_t i) const { return lo == i || hi == i; }
 };
 
+// The collapse graph with, per node, its smallest admissible edge, and an indexed min-heap of
+// the nodes ordered by that edge. The globally smallest admissible edge is the best edge of both
+// its endpoints, so the heap's top gives it. One heap entry per node instead of one per edge
+// (with stale copies) keeps the queue at a fifth of the bytes and the heap shallow; the order of
+// the merges is exactly that of a queue of all edges (see merge()).
 class Collapser {
 public:
     Collapser(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals)
-        : x_(positions), n_(normals), w_(positions.size(), 1), version_(positions.size(), 0),
-          alive_(positions.size(), 1), neighbours_(positions.size()) {}
+        : x_(positions), n_(normals), w_(positions.size(), 1), alive_(positions.size(), 1),
+          neighbours_(positions.size()), best_(positions.size()), has_best_(positions.size(), 0),
+          slot_(positions.size(), kNotQueued) {}
 
     void build_graph(int k, const Execution& exec) {
         { // the kd-tree and the kNN graphs are freed before the queue is filled (peak memory)
@@ -44,27 +49,21 @@ public:
                         neighbours_[i].push_back(*j); // D-14: > 90° never linked
             }
         }
-        for (const auto& list : neighbours_) edges_ += list.size();
-        edges_ /= 2;
-        queue_.reserve(edges_ + edges_ / 4 + 16); // room for stale entries, see drop_stale_entries
+        parallel_for(exec, neighbours_.size(), [&](std::size_t i) { find_best(std::uint32_t(i)); });
+        heap_.reserve(neighbours_.size());
         for (std::uint32_t i = 0; i < neighbours_.size(); ++i)
-            for (std::uint32_t j : neighbours_[i])
-                if (i < j) queue_.push_back(entry(i, j));
-        std::make_heap(queue_.begin(), queue_.end(), std::greater<QueuedEdge>());
+            if (has_best_[i]) heap_.push_back(i);
+        std::make_heap(heap_.begin(), heap_.end(),
+                       [&](std::uint32_t a, std::uint32_t b) { return before(b, a); });
+        for (std::uint32_t s = 0; s < heap_.size(); ++s) slot_[heap_[s]] = s;
     }
 
-    // Pops and performs the next valid collapse; false when no valid edge is left.
+    // Performs the next collapse; false when no admissible edge is left.
     bool collapse_next(std::vector<CollapseRecord>& records) {
-        while (!queue_.empty()) {
-            std::pop_heap(queue_.begin(), queue_.end(), std::greater<QueuedEdge>());
-            const QueuedEdge e = queue_.back();
-            queue_.pop_back();
-            if (stale(e)) continue;
-            if (n_[e.lo].dot(n_[e.hi]) < 0) continue; // D-15: merged normals may have turned apart
-            merge(e.lo, e.hi, records);
-            return true;
-        }
-        return false;
+        if (heap_.empty()) return false;
+        const EdgeKey e = best_[heap_[0]];
+        merge(e.lo, e.hi, records);
+        return true;
     }
 
     const std::vector<Vec3>& positions() const { return x_; }
@@ -73,35 +72,75 @@ public:
     bool alive(std::uint32_t i) const { return alive_[i]; }
 
 private:
-    bool stale(const QueuedEdge& e) const {
-        return !alive_[e.lo] || !alive_[e.hi] || version_[e.lo] != e.lo_version ||
-               version_[e.hi] != e.hi_version;
-    }
+    static constexpr std::uint32_t kNotQueued = ~std::uint32_t(0);
 
-    // Every graph edge has at most one valid entry and the graph only loses edges, so when the
-    // heap is about to outgrow the room reserved for it (a quarter more than the first edge
-    // count), at least a fifth of it is stale: it is rebuilt from the valid entries instead of
-    // reallocated. Memory stays at the reservation, and the valid entries (totally ordered,
-    // D-10) come out in the same order as before.
-    void drop_stale_entries(std::size_t incoming) {
-        if (queue_.size() + incoming <= queue_.capacity()) return;
-        queue_.erase(std::remove_if(queue_.begin(), queue_.end(),
-                                    [&](const QueuedEdge& e) { return stale(e); }),
-                     queue_.end());
-        std::make_heap(queue_.begin(), queue_.end(), std::greater<QueuedEdge>());
-    }
-
-    QueuedEdge entry(std::uint32_t a, std::uint32_t b) const {
+    // §6.1: tangent distance times the merged weight, in both distance modes. D-15: an edge
+    // whose normals have turned more than 90° apart is not admissible (until one end changes).
+    bool admissible_key(std::uint32_t a, std::uint32_t b, EdgeKey& key) const {
         const std::uint32_t lo = std::min(a, b), hi = std::max(a, b);
-        // §6.1: tangent distance times the merged weight, in both distance modes.
-        const double priority =
-            tangent_distance(x_[hi] - x_[lo], n_[lo], n_[hi]) * double(w_[lo] + w_[hi]);
-        return {priority, lo, hi, version_[lo], version_[hi]};
+        if (n_[lo].dot(n_[hi]) < 0) return false;
+        key = {tangent_distance(x_[hi] - x_[lo], n_[lo], n_[hi]) * double(w_[lo] + w_[hi]), lo, hi};
+        return true;
     }
 
-    void push(std::uint32_t a, std::uint32_t b) {
-        queue_.push_back(entry(a, b));
-        std::push_heap(queue_.begin(), queue_.end(), std::greater<QueuedEdge>());
+    void find_best(std::uint32_t i) {
+        has_best_[i] = 0;
+        EdgeKey key;
+        for (std::uint32_t j : neighbours_[i])
+            if (admissible_key(i, j, key) && (!has_best_[i] || key < best_[i])) {
+                best_[i] = key;
+                has_best_[i] = 1;
+            }
+    }
+
+    bool before(std::uint32_t a, std::uint32_t b) const { return best_[a] < best_[b]; }
+
+    void place(std::uint32_t s, std::uint32_t node) {
+        heap_[s] = node;
+        slot_[node] = s;
+    }
+    void sift_up(std::uint32_t s) {
+        const std::uint32_t node = heap_[s];
+        while (s > 0) {
+            const std::uint32_t parent = (s - 1) / 2;
+            if (!before(node, heap_[parent])) break;
+            place(s, heap_[parent]);
+            s = parent;
+        }
+        place(s, node);
+    }
+    void sift_down(std::uint32_t s) {
+        const std::uint32_t node = heap_[s], size = std::uint32_t(heap_.size());
+        for (;;) {
+            std::uint32_t child = 2 * s + 1;
+            if (child >= size) break;
+            if (child + 1 < size && before(heap_[child + 1], heap_[child])) ++child;
+            if (!before(heap_[child], node)) break;
+            place(s, heap_[child]);
+            s = child;
+        }
+        place(s, node);
+    }
+    void dequeue(std::uint32_t node) {
+        const std::uint32_t s = slot_[node];
+        if (s == kNotQueued) return;
+        slot_[node] = kNotQueued;
+        const std::uint32_t last = heap_.back();
+        heap_.pop_back();
+        if (last == node) return;
+        place(s, last);
+        sift_up(s);
+        sift_down(slot_[last]);
+    }
+    // Puts the node where its (new) best edge belongs, or takes it out without one.
+    void requeue(std::uint32_t node) {
+        if (!has_best_[node]) return dequeue(node);
+        if (slot_[node] == kNotQueued) {
+            heap_.push_back(node);
+            slot_[node] = std::uint32_t(heap_.size() - 1);
+        }
+        sift_up(slot_[node]);
+        sift_down(slot_[node]);
     }
 
     void merge(std::uint32_t a, std::uint32_t b, std::vector<CollapseRecord>& records) {
@@ -115,10 +154,7 @@ private:
         n_[a] = normal;
         w_[a] += w_[b];
         alive_[b] = 0;
-        ++version_[a];
-        ++version_[b];
         // b's neighbours become a's (no repeats, no self loops).
-        edges_ -= neighbours_[b].size();
         for (std::uint32_t c : neighbours_[b]) {
             auto& list = neighbours_[c];
             list.erase(std::remove(list.begin(), list.end(), b), list.end());
@@ -127,20 +163,37 @@ private:
                 neighbours_[a].end()) {
                 neighbours_[a].push_back(c);
                 list.push_back(a);
-                ++edges_;
             }
         }
         std::vector<std::uint32_t>().swap(neighbours_[b]);
-        drop_stale_entries(neighbours_[a].size());
-        for (std::uint32_t c : neighbours_[a]) push(a, c);
+        has_best_[b] = 0;
+        dequeue(b);
+        find_best(a);
+        requeue(a);
+        // Only edges at a changed (a moved, b's edges became a's): a neighbour whose best edge
+        // touched a or b looks again at all its edges, any other one only at its edge to a.
+        for (std::uint32_t c : neighbours_[a]) {
+            EdgeKey key;
+            if (has_best_[c] && (best_[c].touches(a) || best_[c].touches(b))) {
+                find_best(c);
+            } else if (admissible_key(c, a, key) && (!has_best_[c] || key < best_[c])) {
+                best_[c] = key;
+                has_best_[c] = 1;
+            } else {
+                continue;
+            }
+            requeue(c);
+        }
     }
 
     std::vector<Vec3> x_, n_;
-    std::vector<std::uint32_t> w_, version_;
+    std::vector<std::uint32_t> w_;
     std::vector<std::uint8_t> alive_;
     std::vector<std::vector<std::uint32_t>> neighbours_;
-    std::size_t edges_ = 0;         ///< edges of the current graph
-    std::vector<QueuedEdge> queue_; ///< binary min-heap on (priority, lo, hi), with stale entries
+    std::vector<EdgeKey> best_; ///< per node: its smallest admissible edge, if has_best_
+    std::vector<std::uint8_t> has_best_;
+    std::vector<std::uint32_t> heap_; ///< nodes with an admissible edge, min-heap on best_
+    std::vector<std::uint32_t> slot_; ///< per node: its index in heap_, or kNotQueued
 };
 
 } // namespace

@@ -30,15 +30,25 @@ std::vector<std::uint32_t> near_duplicate_representatives(const std::vector<Vec3
     head.reserve(n);
     std::vector<std::uint32_t> next(n, kNone);
     const double squared = tolerance * tolerance;
+    // Cells twice the tolerance wide: a ball of radius `tolerance` then meets at most two cells
+    // per axis, the point's own and the one on the side of the half it lies in (8 cells, not 27).
+    // Near a half's middle both sides are searched, so that rounding never hides a neighbour.
+    const double width = 2 * tolerance;
     for (std::uint32_t i = 0; i < n; ++i) {
         const Vec3& p = positions[i];
-        const Cell cell{std::int64_t(std::floor(p[0] / tolerance)),
-                        std::int64_t(std::floor(p[1] / tolerance)),
-                        std::int64_t(std::floor(p[2] / tolerance))};
+        Cell cell;
+        std::array<std::int64_t, 3> low, high; // cell offsets to search, per axis
+        for (int axis = 0; axis < 3; ++axis) {
+            const double scaled = p[axis] / width, floor = std::floor(scaled);
+            const double half = scaled - floor - 0.5;
+            cell[axis] = std::int64_t(floor);
+            low[axis] = half < 1e-6 ? -1 : 0;
+            high[axis] = half > -1e-6 ? 1 : 0;
+        }
         std::uint32_t best = kNone;
-        for (std::int64_t a = -1; a <= 1; ++a)
-            for (std::int64_t b = -1; b <= 1; ++b)
-                for (std::int64_t c = -1; c <= 1; ++c) {
+        for (std::int64_t a = low[0]; a <= high[0]; ++a)
+            for (std::int64_t b = low[1]; b <= high[1]; ++b)
+                for (std::int64_t c = low[2]; c <= high[2]; ++c) {
                     const auto it = head.find({cell[0] + a, cell[1] + b, cell[2] + c});
                     if (it == head.end()) continue;
                     for (std::uint32_t r = it->second; r != kNone; r = next[r])
