@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
+#include <set>
 
 namespace hrsr {
 namespace {
@@ -91,6 +93,38 @@ TEST(NeighbourGraph, SymmetricUnionIsSymmetricSortedAndLoopFree) {
         }
         for (int j = 0; j < table.k; ++j) // every kNN relation is an edge
             EXPECT_TRUE(std::binary_search(g.begin(i), g.end(i), table.row(i)[j]));
+    }
+}
+
+// Exactly the union, not just a symmetric superset: rows with repeats, self loops, empty rows,
+// one-sided and mutual relations, against a set-based union, with 1 and 2 threads.
+TEST(NeighbourGraph, SymmetricUnionOfAnyRelationIsExactlyTheUnion) {
+    const std::size_t n = 500;
+    std::mt19937 random(3);
+    std::uniform_int_distribution<std::uint32_t> target(0, n - 1), length(0, 12);
+    CsrGraph directed;
+    std::vector<std::set<std::uint32_t>> expected(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint32_t d = i % 50 == 0 ? 0 : length(random);
+        for (std::uint32_t e = 0; e < d; ++e) {
+            // Mostly near i (many mutual pairs), sometimes anywhere, sometimes i itself.
+            std::uint32_t j = e % 5 == 4 ? target(random) : (i + target(random) % 7) % n;
+            if (e % 11 == 10) j = i;
+            directed.adjacency.push_back(j);
+            if (e % 3 == 0) directed.adjacency.push_back(j); // a repeat
+            if (j == i) continue;
+            expected[i].insert(j);
+            expected[j].insert(i);
+        }
+        directed.offsets.push_back(directed.adjacency.size());
+    }
+    for (int threads : {1, 2}) {
+        const CsrGraph g = symmetric_union(directed, Execution{threads, nullptr});
+        ASSERT_EQ(g.size(), n);
+        for (std::uint32_t i = 0; i < n; ++i)
+            EXPECT_EQ(std::vector<std::uint32_t>(g.begin(i), g.end(i)),
+                      std::vector<std::uint32_t>(expected[i].begin(), expected[i].end()))
+                << "row " << i << " with " << threads << " threads";
     }
 }
 
