@@ -75,6 +75,9 @@ KnnTable knn_table(const KnnIndex& index, int k, const Execution& exec) {
     const std::size_t n = index.size();
     if (n < 2 || k <= 0) return table;
     table.k = int(std::min<std::size_t>(std::size_t(k), n - 1));
+    // Room for the symmetric union's added relations (at most one per entry), so that it can be
+    // built in this buffer: reserved address space, resident only where the union writes.
+    table.index.reserve(2 * n * std::size_t(table.k));
     table.index.resize(n * std::size_t(table.k));
     parallel_for(exec, n, [&](std::size_t i) {
         thread_local std::vector<Neighbour> found;

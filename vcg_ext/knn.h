@@ -52,7 +52,8 @@ struct KnnTable {
     const std::uint32_t* row(std::size_t i) const { return index.data() + i * std::size_t(k); }
 };
 
-/// Computes the table in parallel (per-point queries, results written by index).
+/// Computes the table in parallel (per-point queries, results written by index). The index
+/// vector has capacity for twice its size, for symmetric_union() to work in place.
 KnnTable knn_table(const KnnIndex& index, int k, const Execution& exec);
 
 } // namespace hrsr

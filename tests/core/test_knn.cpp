@@ -97,7 +97,8 @@ TEST(NeighbourGraph, SymmetricUnionIsSymmetricSortedAndLoopFree) {
 }
 
 // Exactly the union, not just a symmetric superset: rows with repeats, self loops, empty rows,
-// one-sided and mutual relations, against a set-based union, with 1 and 2 threads.
+// one-sided and mutual relations, against a set-based union, with 1 and 2 threads, with and
+// without room in the input's buffer.
 TEST(NeighbourGraph, SymmetricUnionOfAnyRelationIsExactlyTheUnion) {
     const std::size_t n = 500;
     std::mt19937 random(3);
@@ -118,14 +119,17 @@ TEST(NeighbourGraph, SymmetricUnionOfAnyRelationIsExactlyTheUnion) {
         }
         directed.offsets.push_back(directed.adjacency.size());
     }
-    for (int threads : {1, 2}) {
-        const CsrGraph g = symmetric_union(directed, Execution{threads, nullptr});
-        ASSERT_EQ(g.size(), n);
-        for (std::uint32_t i = 0; i < n; ++i)
-            EXPECT_EQ(std::vector<std::uint32_t>(g.begin(i), g.end(i)),
-                      std::vector<std::uint32_t>(expected[i].begin(), expected[i].end()))
-                << "row " << i << " with " << threads << " threads";
-    }
+    for (int threads : {1, 2})
+        for (bool room : {false, true}) { // built in a second array, or in the input's buffer
+            CsrGraph input = directed;
+            if (room) input.adjacency.reserve(2 * input.adjacency.size());
+            const CsrGraph g = symmetric_union(std::move(input), Execution{threads, nullptr});
+            ASSERT_EQ(g.size(), n);
+            for (std::uint32_t i = 0; i < n; ++i)
+                EXPECT_EQ(std::vector<std::uint32_t>(g.begin(i), g.end(i)),
+                          std::vector<std::uint32_t>(expected[i].begin(), expected[i].end()))
+                    << "row " << i << " with " << threads << " threads, room " << room;
+        }
 }
 
 TEST(DisjointSets, UnitesAndFinds) {

@@ -16,48 +16,75 @@ CsrGraph symmetric_union(KnnTable table, std::size_t n, const Execution& exec) {
 }
 
 // Peak memory matters here: with k = 70 on a few hundred thousand points (the orientation
-// graph, RsR's candidate graph) each array below is a hundred megabytes or more. Storing every
-// relation at both ends and deduplicating afterwards needed three times the input; instead each
-// row is cleaned in place, only the relations missing at the other end (those that are not
-// mutual, typically well under half) are counted, and the result is written once: the input
-// plus the result, about 2.4 times the input, is the peak.
+// graph, RsR's candidate graph) the input is a hundred megabytes or more. Storing every relation
+// at both ends and deduplicating afterwards needed three times the input. Instead each row is
+// cleaned in place and only the relations missing at the other end (those that are not mutual:
+// for kNN a few per cent) are added. When the input's buffer has room for them (knn_table()
+// reserves it; untouched capacity costs address space, not memory) the union is built inside
+// it; otherwise in a second array, twice the input at the peak.
 CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
     const std::size_t n = directed.size();
     std::vector<std::uint32_t>& a = directed.adjacency;
-    // Each row sorted by index, without repeats or self loops, at the start of its slot.
+    std::vector<std::uint64_t>& start = directed.offsets; // row i: own[i] entries from start[i]
     std::vector<std::uint32_t> own(n, 0);
-    parallel_for(exec, n, [&](std::size_t i) {
-        auto first = a.begin() + std::ptrdiff_t(directed.offsets[i]);
-        auto last = a.begin() + std::ptrdiff_t(directed.offsets[i + 1]);
+    parallel_for(exec, n, [&](std::size_t i) { // sorted, without repeats or self loops
+        auto first = a.begin() + std::ptrdiff_t(start[i]);
+        auto last = a.begin() + std::ptrdiff_t(start[i + 1]);
         std::sort(first, last);
         last = std::unique(first, last);
         last = std::remove(first, last, std::uint32_t(i));
         own[i] = std::uint32_t(last - first);
     });
-    auto row = [&](std::size_t i) { return a.data() + directed.offsets[i]; };
+    const std::uint32_t* base = a.data();
     auto lists = [&](std::uint32_t j, std::uint32_t i) {
-        return std::binary_search(row(j), row(j) + own[j], i);
+        return std::binary_search(base + start[j], base + start[j] + own[j], i);
     };
-    // i lists j but j does not list i: j's row gains i. Counted, then placed, from the rows
-    // that hold them; where they land within a row does not matter (rows are sorted last).
+    // i lists j but j does not list i: j's row gains i.
     std::vector<std::atomic<std::uint32_t>> missing(n);
     parallel_for(exec, n, [&](std::size_t i) {
-        for (const std::uint32_t* j = row(i); j != row(i) + own[i]; ++j)
+        for (const std::uint32_t* j = base + start[i]; j != base + start[i] + own[i]; ++j)
             if (!lists(*j, std::uint32_t(i))) missing[*j].fetch_add(1, std::memory_order_relaxed);
     });
     CsrGraph g;
     g.offsets.assign(n + 1, 0);
     for (std::size_t i = 0; i < n; ++i) g.offsets[i + 1] = g.offsets[i] + own[i] + missing[i];
-    g.adjacency.resize(g.offsets[n]);
+    const std::size_t total = g.offsets[n];
+    if (total <= a.capacity()) {
+        // Rows packed to the left in increasing order, then moved right to their final slots in
+        // decreasing order: every move reads what no earlier move has overwritten.
+        std::uint64_t packed = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (packed != start[i])
+                std::copy_n(a.begin() + std::ptrdiff_t(start[i]), own[i],
+                            a.begin() + std::ptrdiff_t(packed));
+            start[i] = packed;
+            packed += own[i];
+        }
+        a.resize(total); // within the capacity: no reallocation
+        for (std::size_t i = n; i-- > 0;) {
+            const auto first = a.begin() + std::ptrdiff_t(start[i]);
+            if (g.offsets[i] != start[i])
+                std::copy_backward(first, first + own[i],
+                                   a.begin() + std::ptrdiff_t(g.offsets[i] + own[i]));
+            start[i] = g.offsets[i];
+        }
+        g.adjacency = std::move(a);
+        base = g.adjacency.data(); // the same buffer, now the result's
+    } else {
+        g.adjacency.resize(total);
+        parallel_for(exec, n, [&](std::size_t i) {
+            std::copy_n(a.begin() + std::ptrdiff_t(start[i]), own[i],
+                        g.adjacency.begin() + std::ptrdiff_t(g.offsets[i]));
+        });
+    }
+    // The missing relations go after each row's own ones (where within a row does not matter:
+    // rows are sorted last); the own parts are only read meanwhile.
+    for (std::size_t i = 0; i < n; ++i) missing[i].store(0, std::memory_order_relaxed);
     parallel_for(exec, n, [&](std::size_t i) {
-        std::copy_n(row(i), own[i], g.adjacency.begin() + std::ptrdiff_t(g.offsets[i]));
-        missing[i].store(own[i], std::memory_order_relaxed); // from now on: the fill cursor
-    });
-    parallel_for(exec, n, [&](std::size_t i) {
-        for (const std::uint32_t* j = row(i); j != row(i) + own[i]; ++j)
+        for (const std::uint32_t* j = base + start[i]; j != base + start[i] + own[i]; ++j)
             if (!lists(*j, std::uint32_t(i)))
-                g.adjacency[g.offsets[*j] + missing[*j].fetch_add(1, std::memory_order_relaxed)] =
-                    std::uint32_t(i);
+                g.adjacency[g.offsets[*j] + own[*j] +
+                            missing[*j].fetch_add(1, std::memory_order_relaxed)] = std::uint32_t(i);
     });
     directed = CsrGraph();
     parallel_for(exec, n, [&](std::size_t i) {
