@@ -262,20 +262,21 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     report.l_min = options.l_min_percent > 0
                        ? options.l_min_percent / 100.0 * report.preprocess.bbox_diagonal
                        : options.reexpand.l_min;
+    // Fates of the points that are not their own vertex (§8.7) need the collapse trees; the
+    // records themselves go to the re-expansion, which frees them as soon as they are spent.
+    const std::vector<std::uint32_t> root = tree_roots(cloud.size(), collapsed.records);
     ReexpandedMesh fine;
     {
         Timer timer(report.timings, "re-expansion");
         fine = replay_collapses(cloud.positions, cloud.normals, coarse_vertex_node,
-                                coarse_positions, m.triangles, collapsed.records, options.reexpand,
-                                report.l_min * cloud.normalisation.scale, exec, report.reexpansion,
-                                reexpansion_observer);
+                                coarse_positions, m.triangles, std::move(collapsed.records),
+                                options.reexpand, report.l_min * cloud.normalisation.scale, exec,
+                                report.reexpansion, reexpansion_observer);
     }
 
     begin_phase(exec, "assembly");
     Timer timer(report.timings, "assembly");
-    // Fates of the points that are not their own vertex (§8.7).
-    const std::vector<std::uint32_t> root = tree_roots(cloud.size(), collapsed.records);
-    collapsed = CollapsedCloud(); // the records are spent: free them before the output is built
+    collapsed = CollapsedCloud();
     std::vector<std::uint8_t> dropped_root(cloud.size(), 0);
     for (std::uint32_t node : dropped_nodes) dropped_root[node] = 1;
     for (std::uint32_t node = 0; node < cloud.size(); ++node) {

@@ -132,7 +132,9 @@ public:
             mesh_.move(v, points_[vertex_node_[v]]);
     }
 
-    ReexpandedMesh result() const { return {vertex_node_, mesh_.triangles(), alias_}; }
+    ReexpandedMesh take_result() {
+        return {std::move(vertex_node_), mesh_.triangles(), std::move(alias_)};
+    }
 
 private:
     const std::vector<Vec3>& points_;
@@ -152,9 +154,9 @@ ReexpandedMesh replay_collapses(const std::vector<Vec3>& points, const std::vect
                                 const std::vector<std::uint32_t>& coarse_vertex_node,
                                 const std::vector<Vec3>& coarse_positions,
                                 const std::vector<Triangle>& coarse_triangles,
-                                const std::vector<CollapseRecord>& records,
-                                const ReexpandOptions& options, double l_min, const Execution& exec,
-                                ReexpansionStats& stats, ReexpansionObserver* observer) {
+                                std::vector<CollapseRecord> records, const ReexpandOptions& options,
+                                double l_min, const Execution& exec, ReexpansionStats& stats,
+                                ReexpansionObserver* observer) {
     validate(options);
     stats.records = records.size();
     Replayer replayer(points, normals, coarse_vertex_node, coarse_positions, coarse_triangles,
@@ -181,7 +183,8 @@ ReexpandedMesh replay_collapses(const std::vector<Vec3>& points, const std::vect
         replayer.replay(r, stats);
     }
     if (options.snap_to_input || !stats.stopped_at_l_min) replayer.snap_to_input();
-    return replayer.result();
+    std::vector<CollapseRecord>().swap(records); // spent: free them before the export
+    return replayer.take_result();
 }
 
 } // namespace hrsr

@@ -46,13 +46,14 @@ public:
 /// Replays `records` backwards on the coarse mesh. `coarse_vertex_node[v]` is the node of each
 /// coarse mesh vertex (copies of a non-manifold node share it). `points` and `normals` are the
 /// original positions and normals of all nodes (the algorithm's coordinates). `l_min` is in
-/// those coordinates.
+/// those coordinates. `records` is taken by value (pass it with std::move): it is freed before
+/// the mesh is exported, which is the phase's memory peak.
 ReexpandedMesh replay_collapses(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                 const std::vector<std::uint32_t>& coarse_vertex_node,
                                 const std::vector<Vec3>& coarse_positions,
                                 const std::vector<Triangle>& coarse_triangles,
-                                const std::vector<CollapseRecord>& records,
-                                const ReexpandOptions& options, double l_min, const Execution& exec,
-                                ReexpansionStats& stats, ReexpansionObserver* observer = nullptr);
+                                std::vector<CollapseRecord> records, const ReexpandOptions& options,
+                                double l_min, const Execution& exec, ReexpansionStats& stats,
+                                ReexpansionObserver* observer = nullptr);
 
 } // namespace hrsr

@@ -35,7 +35,9 @@ CandidateGraph build_candidate_graph(const ComponentCloud& cloud, const KnnIndex
     directed.offsets.assign(n + 1, 0);
     for (std::size_t i = 0; i < n; ++i)
         directed.offsets[i + 1] = directed.offsets[i] + kept[i].size();
-    directed.adjacency.reserve(directed.offsets[n]);
+    // Twice the room: symmetric_union() then builds the union in this buffer (untouched capacity
+    // is address space, not memory).
+    directed.adjacency.reserve(2 * directed.offsets[n]);
     for (auto& row : kept) {
         directed.adjacency.insert(directed.adjacency.end(), row.begin(), row.end());
         std::vector<std::uint32_t>().swap(row);
@@ -57,21 +59,29 @@ std::vector<CandidateEdge> face_split_candidates(const CandidateGraph& g,
                                                  const ComponentCloud& cloud, DistanceMode mode,
                                                  const Execution& exec) {
     const std::size_t n = g.graph.size();
-    std::vector<std::vector<CandidateEdge>> per_vertex(n);
-    parallel_for(exec, n, [&](std::size_t i) {
+    // Two passes (count, then fill at each row's offset) so that the list is allocated once, at
+    // its exact size: per-row vectors appended to a growing one held up to four times its bytes,
+    // the peak of RsR on large clouds. The lengths are computed twice; that is cheaper.
+    auto for_each_kept = [&](std::size_t i, auto&& keep) {
         for (const std::uint32_t* j = g.graph.begin(i); j != g.graph.end(i); ++j) {
             if (*j <= i) continue;
             const double len = edge_length(mode, cloud.smoothed[i], cloud.smoothed[*j],
                                            cloud.normals[i], cloud.normals[*j]);
-            if (len <= g.pre_max_length[i] && len <= g.pre_max_length[*j])
-                per_vertex[i].push_back({len, std::uint32_t(i), *j});
+            if (len <= g.pre_max_length[i] && len <= g.pre_max_length[*j]) keep(len, *j);
         }
+    };
+    std::vector<std::uint64_t> offsets(n + 1, 0);
+    parallel_for(exec, n, [&](std::size_t i) {
+        for_each_kept(i, [&](double, std::uint32_t) { ++offsets[i + 1]; });
     });
-    std::vector<CandidateEdge> all;
-    for (auto& row : per_vertex) {
-        all.insert(all.end(), row.begin(), row.end());
-        std::vector<CandidateEdge>().swap(row);
-    }
+    for (std::size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
+    std::vector<CandidateEdge> all(offsets[n]);
+    parallel_for(exec, n, [&](std::size_t i) {
+        std::uint64_t at = offsets[i];
+        for_each_kept(i, [&](double len, std::uint32_t j) {
+            all[at++] = {len, std::uint32_t(i), j};
+        });
+    });
     std::sort(all.begin(), all.end(), [](const CandidateEdge& a, const CandidateEdge& b) {
         if (a.length != b.length) return a.length < b.length;
         return a.i != b.i ? a.i < b.i : a.j < b.j;
