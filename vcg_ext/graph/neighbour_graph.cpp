@@ -19,9 +19,10 @@ CsrGraph symmetric_union(KnnTable table, std::size_t n, const Execution& exec) {
 // graph, RsR's candidate graph) the input is a hundred megabytes or more. Storing every relation
 // at both ends and deduplicating afterwards needed three times the input. Instead each row is
 // cleaned in place and only the relations missing at the other end (those that are not mutual:
-// for kNN a few per cent) are added. When the input's buffer has room for them (knn_table()
+// for kNN about a tenth) are added. When the input's buffer has room for them (knn_table()
 // reserves it; untouched capacity costs address space, not memory) the union is built inside
-// it; otherwise in a second array, twice the input at the peak.
+// it; otherwise in a second array, twice the input at the peak. A byte per input entry marks
+// the one-sided relations.
 CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
     const std::size_t n = directed.size();
     std::vector<std::uint32_t>& a = directed.adjacency;
@@ -36,14 +37,51 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
         own[i] = std::uint32_t(last - first);
     });
     const std::uint32_t* base = a.data();
-    auto lists = [&](std::uint32_t j, std::uint32_t i) {
-        return std::binary_search(base + start[j], base + start[j] + own[j], i);
+    // Where row j holds i (its index in the row), or -1: a branch-free binary search of the
+    // sorted row (most answers are "yes", at unpredictable depths, where branches cost more
+    // than the comparisons).
+    auto find = [&](std::uint32_t j, std::uint32_t i) -> std::int64_t {
+        const std::uint32_t* row = base + start[j];
+        const std::uint32_t* p = row;
+        std::size_t length = own[j];
+        if (length == 0) return -1;
+        while (length > 1) {
+            const std::size_t half = length / 2;
+            p = p[half] <= i ? p + half : p;
+            length -= half;
+        }
+        return *p == i ? p - row : -1;
     };
-    // i lists j but j does not list i: j's row gains i.
+    // One bit per input entry i -> j (by its place in the input rows). Each pair is searched
+    // once, from its smaller end i < j. Found: the partner entry j -> i gets its bit ("mutual");
+    // not found: i -> j gets its bit ("one-sided"). So an entry to a larger index is one-sided
+    // when its bit is set, one to a smaller index when it is not. Bits are set with atomic ORs
+    // (neighbouring bits belong to other rows); they are only read after that pass.
+    const std::vector<std::uint64_t> input_start(start.begin(), start.end());
+    std::vector<std::atomic<std::uint8_t>> bits((input_start[n] + 7) / 8);
+    auto set_bit = [&](std::uint64_t b) {
+        bits[b / 8].fetch_or(std::uint8_t(1u << (b % 8)), std::memory_order_relaxed);
+    };
+    parallel_for(exec, n, [&](std::size_t i) {
+        const std::uint32_t* row = base + start[i];
+        for (std::uint32_t t = 0; t < own[i]; ++t) {
+            const std::uint32_t j = row[t];
+            if (j < i) continue;
+            const std::int64_t at = find(j, std::uint32_t(i));
+            set_bit(at < 0 ? input_start[i] + t : input_start[j] + std::uint64_t(at));
+        }
+    });
+    auto one_sided = [&](std::size_t i, std::uint32_t t) {
+        const std::uint64_t b = input_start[i] + t;
+        const bool bit = (bits[b / 8].load(std::memory_order_relaxed) >> (b % 8)) & 1u;
+        return base[start[i] + t] > i ? bit : !bit;
+    };
+    // One-sided i -> j: j's row gains i.
     std::vector<std::atomic<std::uint32_t>> missing(n);
     parallel_for(exec, n, [&](std::size_t i) {
-        for (const std::uint32_t* j = base + start[i]; j != base + start[i] + own[i]; ++j)
-            if (!lists(*j, std::uint32_t(i))) missing[*j].fetch_add(1, std::memory_order_relaxed);
+        for (std::uint32_t t = 0; t < own[i]; ++t)
+            if (one_sided(i, t))
+                missing[base[start[i] + t]].fetch_add(1, std::memory_order_relaxed);
     });
     CsrGraph g;
     g.offsets.assign(n + 1, 0);
@@ -81,10 +119,12 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
     // rows are sorted last); the own parts are only read meanwhile.
     for (std::size_t i = 0; i < n; ++i) missing[i].store(0, std::memory_order_relaxed);
     parallel_for(exec, n, [&](std::size_t i) {
-        for (const std::uint32_t* j = base + start[i]; j != base + start[i] + own[i]; ++j)
-            if (!lists(*j, std::uint32_t(i)))
-                g.adjacency[g.offsets[*j] + own[*j] +
-                            missing[*j].fetch_add(1, std::memory_order_relaxed)] = std::uint32_t(i);
+        for (std::uint32_t t = 0; t < own[i]; ++t) {
+            if (!one_sided(i, t)) continue;
+            const std::uint32_t j = base[start[i] + t];
+            g.adjacency[g.offsets[j] + own[j] +
+                        missing[j].fetch_add(1, std::memory_order_relaxed)] = std::uint32_t(i);
+        }
     });
     directed = CsrGraph();
     parallel_for(exec, n, [&](std::size_t i) {
