@@ -3,6 +3,7 @@
 #include <vcg/space/index/kdtree/kdtree.h>
 
 #include <algorithm>
+#include <new>
 
 namespace hrsr {
 
@@ -77,7 +78,12 @@ KnnTable knn_table(const KnnIndex& index, int k, const Execution& exec) {
     table.k = int(std::min<std::size_t>(std::size_t(k), n - 1));
     // Room for the symmetric union's added relations (at most one per entry), so that it can be
     // built in this buffer: reserved address space, resident only where the union writes.
-    table.index.reserve(2 * n * std::size_t(table.k));
+    try {
+        table.index.reserve(2 * n * std::size_t(table.k));
+    } catch (const std::bad_alloc&) {
+        // Where address space is charged in full (strict overcommit, ulimit -v), go without:
+        // the union then builds its result in a second array.
+    }
     table.index.resize(n * std::size_t(table.k));
     parallel_for(exec, n, [&](std::size_t i) {
         thread_local std::vector<Neighbour> found;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <random>
 #include <set>
+#include <string>
 
 namespace hrsr {
 namespace {
@@ -119,17 +120,35 @@ TEST(NeighbourGraph, SymmetricUnionOfAnyRelationIsExactlyTheUnion) {
         }
         directed.offsets.push_back(directed.adjacency.size());
     }
+    // The same relation without repeats or self loops: its union is larger than it, so without
+    // room the second-array path must run, with room the in-place one.
+    CsrGraph plain;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        std::set<std::uint32_t> row(directed.begin(i), directed.end(i));
+        row.erase(i);
+        plain.adjacency.insert(plain.adjacency.end(), row.begin(), row.end());
+        plain.offsets.push_back(plain.adjacency.size());
+    }
     for (int threads : {1, 2})
-        for (bool room : {false, true}) { // built in a second array, or in the input's buffer
-            CsrGraph input = directed;
-            if (room) input.adjacency.reserve(2 * input.adjacency.size());
-            const CsrGraph g = symmetric_union(std::move(input), Execution{threads, nullptr});
-            ASSERT_EQ(g.size(), n);
-            for (std::uint32_t i = 0; i < n; ++i)
-                EXPECT_EQ(std::vector<std::uint32_t>(g.begin(i), g.end(i)),
-                          std::vector<std::uint32_t>(expected[i].begin(), expected[i].end()))
-                    << "row " << i << " with " << threads << " threads, room " << room;
-        }
+        for (const CsrGraph* relation : {&directed, &plain})
+            for (bool room : {false, true}) {
+                CsrGraph input = *relation;
+                input.adjacency.shrink_to_fit();
+                if (room) input.adjacency.reserve(2 * input.adjacency.size());
+                const std::uint32_t* buffer = input.adjacency.data();
+                const CsrGraph g = symmetric_union(std::move(input), Execution{threads, nullptr});
+                const std::string context = std::string(relation == &plain ? "plain" : "repeats") +
+                                            ", " + std::to_string(threads) + " threads, room " +
+                                            std::to_string(room);
+                if (relation == &plain) {
+                    EXPECT_EQ(g.adjacency.data() == buffer, room) << "path, " << context;
+                }
+                ASSERT_EQ(g.size(), n);
+                for (std::uint32_t i = 0; i < n; ++i)
+                    EXPECT_EQ(std::vector<std::uint32_t>(g.begin(i), g.end(i)),
+                              std::vector<std::uint32_t>(expected[i].begin(), expected[i].end()))
+                        << "row " << i << ", " << context;
+            }
 }
 
 TEST(DisjointSets, UnitesAndFinds) {

@@ -1,4 +1,5 @@
 #include "errors.h"
+#include "options.h"
 #include "preprocess/near_duplicates.h"
 #include "preprocess/sanitize.h"
 #include "samplers.h"
@@ -156,6 +157,51 @@ TEST(NearDuplicates, GridSearchAgreesWithExhaustiveSearch) {
     EXPECT_EQ(fast, exhaustive);
     EXPECT_GT(merged, 1000u); // the case is not vacuous
     EXPECT_LT(merged, points.size() - 500);
+}
+
+// The same at the real tolerance (1e-11 in normalised units), where p / width is no longer
+// exact: points a few ulps from a cell's middle, on both signs, with partners at about the
+// tolerance along an axis and a diagonal (the last distances the test accepts and the first it
+// rejects both occur).
+TEST(NearDuplicates, GridSearchIsExactAtTheRealTolerance) {
+    const double tolerance = constants::kNearDuplicateDistance, width = 2 * tolerance;
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> where(0.2, 0.5);
+    std::uniform_int_distribution<int> ulps(-3, 3), sign(0, 1);
+    auto nudge = [&](double x) {
+        for (int k = ulps(random); k != 0; k += k > 0 ? -1 : 1)
+            x = std::nextafter(x, k > 0 ? 1.0 : -1.0);
+        return x;
+    };
+    std::vector<Vec3> points;
+    for (int cluster = 0; cluster < 300; ++cluster) {
+        Vec3 p;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double x = (sign(random) ? -1 : 1) * where(random);
+            p[axis] = nudge((std::floor(x / width) + 0.5) * width); // near a cell's middle
+        }
+        points.push_back(p);
+        const int axis = cluster % 3;
+        Vec3 q = p;
+        q[axis] = nudge(p[axis] + (cluster % 2 ? tolerance : -tolerance));
+        points.push_back(q);
+        const double d = tolerance / std::sqrt(3.0);
+        points.push_back(Vec3(nudge(p[0] + d), nudge(p[1] - d), nudge(p[2] + d)));
+    }
+    const std::vector<std::uint32_t> fast = near_duplicate_representatives(points, tolerance);
+    std::vector<std::uint32_t> exhaustive(points.size());
+    std::size_t merged = 0;
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+        exhaustive[i] = i;
+        for (std::uint32_t r = 0; r < i && exhaustive[i] == i; ++r)
+            if (exhaustive[r] == r &&
+                (points[r] - points[i]).SquaredNorm() <= tolerance * tolerance)
+                exhaustive[i] = r;
+        merged += exhaustive[i] != i;
+    }
+    EXPECT_EQ(fast, exhaustive);
+    EXPECT_GT(merged, 100u); // both outcomes occur
+    EXPECT_LT(merged, 500u);
 }
 
 } // namespace

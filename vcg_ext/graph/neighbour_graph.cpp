@@ -21,8 +21,8 @@ CsrGraph symmetric_union(KnnTable table, std::size_t n, const Execution& exec) {
 // cleaned in place and only the relations missing at the other end (those that are not mutual:
 // for kNN about a tenth) are added. When the input's buffer has room for them (knn_table()
 // reserves it; untouched capacity costs address space, not memory) the union is built inside
-// it; otherwise in a second array, twice the input at the peak. A byte per input entry marks
-// the one-sided relations.
+// it; otherwise in a second array, twice the input at the peak. One bit per input entry tells
+// mutual from one-sided relations.
 CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
     const std::size_t n = directed.size();
     std::vector<std::uint32_t>& a = directed.adjacency;
@@ -55,8 +55,9 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
     // One bit per input entry i -> j (by its place in the input rows). Each pair is searched
     // once, from its smaller end i < j. Found: the partner entry j -> i gets its bit ("mutual");
     // not found: i -> j gets its bit ("one-sided"). So an entry to a larger index is one-sided
-    // when its bit is set, one to a smaller index when it is not. Bits are set with atomic ORs
-    // (neighbouring bits belong to other rows); they are only read after that pass.
+    // when its bit is set, one to a smaller index when it is not. Bits are set with atomic ORs:
+    // a "mutual" bit of row j is set by the thread working on row i, and the bits sharing its
+    // byte may belong to other rows. They are only read after that pass.
     const std::vector<std::uint64_t> input_start(start.begin(), start.end());
     std::vector<std::atomic<std::uint8_t>> bits((input_start[n] + 7) / 8);
     auto set_bit = [&](std::uint64_t b) {
@@ -92,9 +93,10 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
         // decreasing order: every move reads what no earlier move has overwritten.
         std::uint64_t packed = 0;
         for (std::size_t i = 0; i < n; ++i) {
-            if (packed != start[i])
-                std::copy_n(a.begin() + std::ptrdiff_t(start[i]), own[i],
-                            a.begin() + std::ptrdiff_t(packed));
+            if (packed != start[i]) { // a move to the left: std::copy's precondition holds
+                const auto first = a.begin() + std::ptrdiff_t(start[i]);
+                std::copy(first, first + own[i], a.begin() + std::ptrdiff_t(packed));
+            }
             start[i] = packed;
             packed += own[i];
         }

@@ -25,8 +25,9 @@ struct CsrGraph {
 /// value: pass the table with std::move and its storage becomes the union's input, not a copy.
 CsrGraph symmetric_union(KnnTable table, std::size_t n, const Execution& exec);
 
-/// The same for any directed relation given as rows (row i: the targets of i, any order,
-/// self loops ignored). By value as well: it is freed as soon as both directions are gathered.
+/// The same for any directed relation given as rows (row i: the targets of i, any order, self
+/// loops and repeats ignored). By value as well: its buffer becomes the result's when it has
+/// room for the added relations (reserve twice its size), else it is freed once copied.
 CsrGraph symmetric_union(CsrGraph directed, const Execution& exec);
 
 /// Union-find with path halving and union by size.

@@ -10,8 +10,8 @@ namespace hrsr {
 
 /// For each point, the earliest point within `tolerance` of it that is itself not merged
 /// (its representative), or the point itself. Points are visited in order, so a representative
-/// always precedes the points merged into it. Expected O(N) through a hash grid of cell
-/// `tolerance`; deterministic.
+/// always precedes the points merged into it. Expected O(N) through a hash grid of cells twice
+/// `tolerance` wide; deterministic.
 std::vector<std::uint32_t> near_duplicate_representatives(const std::vector<Vec3>& positions,
                                                           double tolerance);
 

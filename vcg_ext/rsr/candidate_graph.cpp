@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
+#include <stdexcept>
 
 namespace hrsr::rsr {
 
@@ -36,8 +38,12 @@ CandidateGraph build_candidate_graph(const ComponentCloud& cloud, const KnnIndex
     for (std::size_t i = 0; i < n; ++i)
         directed.offsets[i + 1] = directed.offsets[i] + kept[i].size();
     // Twice the room: symmetric_union() then builds the union in this buffer (untouched capacity
-    // is address space, not memory).
-    directed.adjacency.reserve(2 * directed.offsets[n]);
+    // is address space, not memory; where that is charged too, it goes without).
+    try {
+        directed.adjacency.reserve(2 * directed.offsets[n]);
+    } catch (const std::bad_alloc&) {
+        directed.adjacency.reserve(directed.offsets[n]);
+    }
     for (auto& row : kept) {
         directed.adjacency.insert(directed.adjacency.end(), row.begin(), row.end());
         std::vector<std::uint32_t>().swap(row);
@@ -55,6 +61,20 @@ CandidateGraph build_candidate_graph(const ComponentCloud& cloud, const KnnIndex
     return g;
 }
 
+namespace {
+
+// The length of {i, j} if both ends accept it (len ≤ pre_max_length at both), else a negative
+// value. One out-of-line function for both passes of face_split_candidates(): the same machine
+// code, so the count and the fill cannot disagree (e.g. by contracting to FMA differently).
+[[gnu::noinline]] double kept_length(const CandidateGraph& g, const ComponentCloud& cloud,
+                                     DistanceMode mode, std::uint32_t i, std::uint32_t j) {
+    const double len =
+        edge_length(mode, cloud.smoothed[i], cloud.smoothed[j], cloud.normals[i], cloud.normals[j]);
+    return len <= g.pre_max_length[i] && len <= g.pre_max_length[j] ? len : -1.0;
+}
+
+} // namespace
+
 std::vector<CandidateEdge> face_split_candidates(const CandidateGraph& g,
                                                  const ComponentCloud& cloud, DistanceMode mode,
                                                  const Execution& exec) {
@@ -62,25 +82,24 @@ std::vector<CandidateEdge> face_split_candidates(const CandidateGraph& g,
     // Two passes (count, then fill at each row's offset) so that the list is allocated once, at
     // its exact size: per-row vectors appended to a growing one held up to four times its bytes,
     // the peak of RsR on large clouds. The lengths are computed twice; that is cheaper.
-    auto for_each_kept = [&](std::size_t i, auto&& keep) {
-        for (const std::uint32_t* j = g.graph.begin(i); j != g.graph.end(i); ++j) {
-            if (*j <= i) continue;
-            const double len = edge_length(mode, cloud.smoothed[i], cloud.smoothed[*j],
-                                           cloud.normals[i], cloud.normals[*j]);
-            if (len <= g.pre_max_length[i] && len <= g.pre_max_length[*j]) keep(len, *j);
-        }
-    };
     std::vector<std::uint64_t> offsets(n + 1, 0);
     parallel_for(exec, n, [&](std::size_t i) {
-        for_each_kept(i, [&](double, std::uint32_t) { ++offsets[i + 1]; });
+        for (const std::uint32_t* j = g.graph.begin(i); j != g.graph.end(i); ++j)
+            if (*j > i && kept_length(g, cloud, mode, std::uint32_t(i), *j) >= 0) ++offsets[i + 1];
     });
     for (std::size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
     std::vector<CandidateEdge> all(offsets[n]);
     parallel_for(exec, n, [&](std::size_t i) {
         std::uint64_t at = offsets[i];
-        for_each_kept(i, [&](double len, std::uint32_t j) {
-            all[at++] = {len, std::uint32_t(i), j};
-        });
+        for (const std::uint32_t* j = g.graph.begin(i); j != g.graph.end(i); ++j) {
+            if (*j <= i) continue;
+            const double len = kept_length(g, cloud, mode, std::uint32_t(i), *j);
+            if (len < 0) continue;
+            if (at == offsets[i + 1])
+                throw std::logic_error("face_split_candidates: count changed");
+            all[at++] = {len, std::uint32_t(i), *j};
+        }
+        if (at != offsets[i + 1]) throw std::logic_error("face_split_candidates: count changed");
     });
     std::sort(all.begin(), all.end(), [](const CandidateEdge& a, const CandidateEdge& b) {
         if (a.length != b.length) return a.length < b.length;
