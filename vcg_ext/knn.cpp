@@ -71,19 +71,20 @@ void KnnIndex::within(const Vec3& p, double radius, std::vector<std::uint32_t>& 
     out.assign(indices.begin(), indices.end());
 }
 
+void reserve_room_for_union(std::vector<std::uint32_t>& buffer, std::size_t entries) {
+    try { // the union adds at most one relation per entry
+        buffer.reserve(2 * entries);
+    } catch (const std::bad_alloc&) {
+        buffer.reserve(entries);
+    }
+}
+
 KnnTable knn_table(const KnnIndex& index, int k, const Execution& exec) {
     KnnTable table;
     const std::size_t n = index.size();
     if (n < 2 || k <= 0) return table;
     table.k = int(std::min<std::size_t>(std::size_t(k), n - 1));
-    // Room for the symmetric union's added relations (at most one per entry), so that it can be
-    // built in this buffer: reserved address space, resident only where the union writes.
-    try {
-        table.index.reserve(2 * n * std::size_t(table.k));
-    } catch (const std::bad_alloc&) {
-        // Where address space is charged in full (strict overcommit, ulimit -v), go without:
-        // the union then builds its result in a second array.
-    }
+    reserve_room_for_union(table.index, n * std::size_t(table.k));
     table.index.resize(n * std::size_t(table.k));
     parallel_for(exec, n, [&](std::size_t i) {
         thread_local std::vector<Neighbour> found;

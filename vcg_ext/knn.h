@@ -52,8 +52,14 @@ struct KnnTable {
     const std::uint32_t* row(std::size_t i) const { return index.data() + i * std::size_t(k); }
 };
 
-/// Computes the table in parallel (per-point queries, results written by index). The index
-/// vector has capacity for twice its size, for symmetric_union() to work in place.
+/// Reserves twice `entries` in a relation's buffer, so that symmetric_union() can build the union
+/// inside it: address space, resident only where the union writes. Where address space is
+/// charged in full (strict overcommit, ulimit -v) it reserves just `entries`, and the union then
+/// builds its result in a second array.
+void reserve_room_for_union(std::vector<std::uint32_t>& buffer, std::size_t entries);
+
+/// Computes the table in parallel (per-point queries, results written by index), with room
+/// for symmetric_union() to work in place (reserve_room_for_union).
 KnnTable knn_table(const KnnIndex& index, int k, const Execution& exec);
 
 } // namespace hrsr

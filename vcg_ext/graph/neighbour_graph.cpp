@@ -15,6 +15,50 @@ CsrGraph symmetric_union(KnnTable table, std::size_t n, const Execution& exec) {
     return symmetric_union(std::move(directed), exec);
 }
 
+namespace {
+
+// Where `row` (sorted, `length` entries) holds i, or -1: a branch-free binary search (most
+// answers are "yes", at unpredictable depths, where branches cost more than the comparisons).
+std::int64_t find_in_sorted_row(const std::uint32_t* row, std::size_t length, std::uint32_t i) {
+    if (length == 0) return -1;
+    const std::uint32_t* p = row;
+    while (length > 1) {
+        const std::size_t half = length / 2;
+        p = p[half] <= i ? p + half : p;
+        length -= half;
+    }
+    return *p == i ? p - row : -1;
+}
+
+// Moves row i (own[i] entries at start[i]) to offsets[i] inside `a`, which grows to offsets[n]
+// within its capacity (no reallocation); start[i] becomes offsets[i]. Rows are packed to the
+// left in increasing order, then moved right to their final places in decreasing order: every
+// move reads what no earlier move has overwritten.
+void spread_rows_in_place(std::vector<std::uint32_t>& a, std::vector<std::uint64_t>& start,
+                          const std::vector<std::uint32_t>& own,
+                          const std::vector<std::uint64_t>& offsets) {
+    const std::size_t n = own.size();
+    std::uint64_t packed = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (packed != start[i]) { // a move to the left: std::copy's precondition holds
+            const auto first = a.begin() + std::ptrdiff_t(start[i]);
+            std::copy(first, first + own[i], a.begin() + std::ptrdiff_t(packed));
+        }
+        start[i] = packed;
+        packed += own[i];
+    }
+    a.resize(offsets[n]);
+    for (std::size_t i = n; i-- > 0;) {
+        const auto first = a.begin() + std::ptrdiff_t(start[i]);
+        if (offsets[i] != start[i])
+            std::copy_backward(first, first + own[i],
+                               a.begin() + std::ptrdiff_t(offsets[i] + own[i]));
+        start[i] = offsets[i];
+    }
+}
+
+} // namespace
+
 // Peak memory matters here: with k = 70 on a few hundred thousand points (the orientation
 // graph, RsR's candidate graph) the input is a hundred megabytes or more. Storing every relation
 // at both ends and deduplicating afterwards needed three times the input. Instead each row is
@@ -37,21 +81,6 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
         own[i] = std::uint32_t(last - first);
     });
     const std::uint32_t* base = a.data();
-    // Where row j holds i (its index in the row), or -1: a branch-free binary search of the
-    // sorted row (most answers are "yes", at unpredictable depths, where branches cost more
-    // than the comparisons).
-    auto find = [&](std::uint32_t j, std::uint32_t i) -> std::int64_t {
-        const std::uint32_t* row = base + start[j];
-        const std::uint32_t* p = row;
-        std::size_t length = own[j];
-        if (length == 0) return -1;
-        while (length > 1) {
-            const std::size_t half = length / 2;
-            p = p[half] <= i ? p + half : p;
-            length -= half;
-        }
-        return *p == i ? p - row : -1;
-    };
     // One bit per input entry i -> j (by its place in the input rows). Each pair is searched
     // once, from its smaller end i < j. Found: the partner entry j -> i gets its bit ("mutual");
     // not found: i -> j gets its bit ("one-sided"). So an entry to a larger index is one-sided
@@ -68,7 +97,7 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
         for (std::uint32_t t = 0; t < own[i]; ++t) {
             const std::uint32_t j = row[t];
             if (j < i) continue;
-            const std::int64_t at = find(j, std::uint32_t(i));
+            const std::int64_t at = find_in_sorted_row(base + start[j], own[j], std::uint32_t(i));
             set_bit(at < 0 ? input_start[i] + t : input_start[j] + std::uint64_t(at));
         }
     });
@@ -89,25 +118,7 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
     for (std::size_t i = 0; i < n; ++i) g.offsets[i + 1] = g.offsets[i] + own[i] + missing[i];
     const std::size_t total = g.offsets[n];
     if (total <= a.capacity()) {
-        // Rows packed to the left in increasing order, then moved right to their final slots in
-        // decreasing order: every move reads what no earlier move has overwritten.
-        std::uint64_t packed = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (packed != start[i]) { // a move to the left: std::copy's precondition holds
-                const auto first = a.begin() + std::ptrdiff_t(start[i]);
-                std::copy(first, first + own[i], a.begin() + std::ptrdiff_t(packed));
-            }
-            start[i] = packed;
-            packed += own[i];
-        }
-        a.resize(total); // within the capacity: no reallocation
-        for (std::size_t i = n; i-- > 0;) {
-            const auto first = a.begin() + std::ptrdiff_t(start[i]);
-            if (g.offsets[i] != start[i])
-                std::copy_backward(first, first + own[i],
-                                   a.begin() + std::ptrdiff_t(g.offsets[i] + own[i]));
-            start[i] = g.offsets[i];
-        }
+        spread_rows_in_place(a, start, own, g.offsets);
         g.adjacency = std::move(a);
         base = g.adjacency.data(); // the same buffer, now the result's
     } else {

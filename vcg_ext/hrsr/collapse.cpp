@@ -2,37 +2,27 @@
 
 #include "geometry.h"
 #include "graph/neighbour_graph.h"
+#include "graph/vertex_heap.h"
 #include "knn.h"
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 namespace hrsr {
 
 namespace {
 
-// An edge key, totally ordered by (priority, lo, hi) (D-10).
-struct EdgeKey {
-    double priority;
-    std::uint32_t lo, hi;
-    bool operator<(const EdgeKey& o) const {
-        return std::tie(priority, lo, hi) < std::tie(o.priority, o.lo, o.hi);
-    }
-    bool touches(std::uint32_t i) const { return lo == i || hi == i; }
-};
-
-// The collapse graph with, per node, its smallest admissible edge, and an indexed min-heap of
-// the nodes ordered by that edge. The globally smallest admissible edge is the best edge of both
-// its endpoints, so the heap's top gives it. One heap entry per node instead of one per edge
-// (with stale copies) keeps the queue at a fifth of the bytes and the heap shallow; the order of
-// the merges is exactly that of a queue of all edges (see merge()).
+// The collapse graph with, per node, its smallest admissible edge, and a heap of the nodes
+// ordered by that edge (graph/vertex_heap.h; an edge's cost is its §6.1 priority). The globally
+// smallest admissible edge is the best edge of both its endpoints, so the heap's top gives it.
+// One heap entry per node instead of one per edge (with stale copies) keeps the queue at a fifth
+// of the bytes and the heap shallow; the order of the merges is exactly that of a queue of all
+// edges (see merge()).
 class Collapser {
 public:
     Collapser(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals)
         : x_(positions), n_(normals), w_(positions.size(), 1), alive_(positions.size(), 1),
-          neighbours_(positions.size()), best_(positions.size()), has_best_(positions.size(), 0),
-          slot_(positions.size(), kNotQueued) {}
+          neighbours_(positions.size()), queue_(positions.size()) {}
 
     void build_graph(int k, const Execution& exec) {
         { // the kd-tree and the kNN graphs are freed before the queue is filled (peak memory)
@@ -49,19 +39,18 @@ public:
                         neighbours_[i].push_back(*j); // D-14: > 90° never linked
             }
         }
-        parallel_for(exec, neighbours_.size(), [&](std::size_t i) { find_best(std::uint32_t(i)); });
-        heap_.reserve(neighbours_.size());
-        for (std::uint32_t i = 0; i < neighbours_.size(); ++i)
-            if (has_best_[i]) heap_.push_back(i);
-        std::make_heap(heap_.begin(), heap_.end(),
-                       [&](std::uint32_t a, std::uint32_t b) { return before(b, a); });
-        for (std::uint32_t s = 0; s < heap_.size(); ++s) slot_[heap_[s]] = s;
+        const std::size_t n = neighbours_.size();
+        std::vector<EdgeKey> best(n);
+        std::vector<std::uint8_t> has_best(n, 0);
+        parallel_for(exec, n,
+                     [&](std::size_t i) { has_best[i] = best_edge(std::uint32_t(i), best[i]); });
+        queue_.assign(std::move(best), has_best);
     }
 
     // Performs the next collapse; false when no admissible edge is left.
     bool collapse_next(std::vector<CollapseRecord>& records) {
-        if (heap_.empty()) return false;
-        const EdgeKey e = best_[heap_[0]];
+        if (queue_.empty()) return false;
+        const EdgeKey e = queue_.key(queue_.top());
         merge(e.lo, e.hi, records);
         return true;
     }
@@ -72,8 +61,6 @@ public:
     bool alive(std::uint32_t i) const { return alive_[i]; }
 
 private:
-    static constexpr std::uint32_t kNotQueued = ~std::uint32_t(0);
-
     // §6.1: tangent distance times the merged weight, in both distance modes. D-15: an edge
     // whose normals have turned more than 90° apart is not admissible (until one end changes).
     bool admissible_key(std::uint32_t a, std::uint32_t b, EdgeKey& key) const {
@@ -83,64 +70,25 @@ private:
         return true;
     }
 
-    void find_best(std::uint32_t i) {
-        has_best_[i] = 0;
+    // The node's smallest admissible edge; false if it has none.
+    bool best_edge(std::uint32_t i, EdgeKey& best) const {
+        bool found = false;
         EdgeKey key;
         for (std::uint32_t j : neighbours_[i])
-            if (admissible_key(i, j, key) && (!has_best_[i] || key < best_[i])) {
-                best_[i] = key;
-                has_best_[i] = 1;
+            if (admissible_key(i, j, key) && (!found || key < best)) {
+                best = key;
+                found = true;
             }
+        return found;
     }
 
-    bool before(std::uint32_t a, std::uint32_t b) const { return best_[a] < best_[b]; }
-
-    void place(std::uint32_t s, std::uint32_t node) {
-        heap_[s] = node;
-        slot_[node] = s;
-    }
-    void sift_up(std::uint32_t s) {
-        const std::uint32_t node = heap_[s];
-        while (s > 0) {
-            const std::uint32_t parent = (s - 1) / 2;
-            if (!before(node, heap_[parent])) break;
-            place(s, heap_[parent]);
-            s = parent;
-        }
-        place(s, node);
-    }
-    void sift_down(std::uint32_t s) {
-        const std::uint32_t node = heap_[s], size = std::uint32_t(heap_.size());
-        for (;;) {
-            std::uint32_t child = 2 * s + 1;
-            if (child >= size) break;
-            if (child + 1 < size && before(heap_[child + 1], heap_[child])) ++child;
-            if (!before(heap_[child], node)) break;
-            place(s, heap_[child]);
-            s = child;
-        }
-        place(s, node);
-    }
-    void dequeue(std::uint32_t node) {
-        const std::uint32_t s = slot_[node];
-        if (s == kNotQueued) return;
-        slot_[node] = kNotQueued;
-        const std::uint32_t last = heap_.back();
-        heap_.pop_back();
-        if (last == node) return;
-        place(s, last);
-        sift_up(s);
-        sift_down(slot_[last]);
-    }
-    // Puts the node where its (new) best edge belongs, or takes it out without one.
-    void requeue(std::uint32_t node) {
-        if (!has_best_[node]) return dequeue(node);
-        if (slot_[node] == kNotQueued) {
-            heap_.push_back(node);
-            slot_[node] = std::uint32_t(heap_.size() - 1);
-        }
-        sift_up(slot_[node]);
-        sift_down(slot_[node]);
+    // Queues the node with its smallest admissible edge, or takes it out without one.
+    void refresh(std::uint32_t i) {
+        EdgeKey best;
+        if (best_edge(i, best))
+            queue_.set(i, best);
+        else
+            queue_.erase(i);
     }
 
     void merge(std::uint32_t a, std::uint32_t b, std::vector<CollapseRecord>& records) {
@@ -166,23 +114,16 @@ private:
             }
         }
         std::vector<std::uint32_t>().swap(neighbours_[b]);
-        has_best_[b] = 0;
-        dequeue(b);
-        find_best(a);
-        requeue(a);
+        queue_.erase(b);
+        refresh(a);
         // Only edges at a changed (a moved, b's edges became a's): a neighbour whose best edge
         // touched a or b looks again at all its edges, any other one only at its edge to a.
         for (std::uint32_t c : neighbours_[a]) {
             EdgeKey key;
-            if (has_best_[c] && (best_[c].touches(a) || best_[c].touches(b))) {
-                find_best(c);
-            } else if (admissible_key(c, a, key) && (!has_best_[c] || key < best_[c])) {
-                best_[c] = key;
-                has_best_[c] = 1;
-            } else {
-                continue;
-            }
-            requeue(c);
+            if (queue_.contains(c) && (queue_.key(c).touches(a) || queue_.key(c).touches(b)))
+                refresh(c);
+            else if (admissible_key(c, a, key) && (!queue_.contains(c) || key < queue_.key(c)))
+                queue_.set(c, key);
         }
     }
 
@@ -190,10 +131,7 @@ private:
     std::vector<std::uint32_t> w_;
     std::vector<std::uint8_t> alive_;
     std::vector<std::vector<std::uint32_t>> neighbours_;
-    std::vector<EdgeKey> best_; ///< per node: its smallest admissible edge, if has_best_
-    std::vector<std::uint8_t> has_best_;
-    std::vector<std::uint32_t> heap_; ///< nodes with an admissible edge, min-heap on best_
-    std::vector<std::uint32_t> slot_; ///< per node: its index in heap_, or kNotQueued
+    VertexHeap queue_; ///< nodes with an admissible edge, by their smallest one
 };
 
 } // namespace

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <new>
 #include <stdexcept>
 
 namespace hrsr::rsr {
@@ -37,13 +36,7 @@ CandidateGraph build_candidate_graph(const ComponentCloud& cloud, const KnnIndex
     directed.offsets.assign(n + 1, 0);
     for (std::size_t i = 0; i < n; ++i)
         directed.offsets[i + 1] = directed.offsets[i] + kept[i].size();
-    // Twice the room: symmetric_union() then builds the union in this buffer (untouched capacity
-    // is address space, not memory; where that is charged too, it goes without).
-    try {
-        directed.adjacency.reserve(2 * directed.offsets[n]);
-    } catch (const std::bad_alloc&) {
-        directed.adjacency.reserve(directed.offsets[n]);
-    }
+    reserve_room_for_union(directed.adjacency, directed.offsets[n]);
     for (auto& row : kept) {
         directed.adjacency.insert(directed.adjacency.end(), row.begin(), row.end());
         std::vector<std::uint32_t>().swap(row);
