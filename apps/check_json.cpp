@@ -42,6 +42,7 @@ nlohmann::json to_json(const MeshCheck& c) {
         {"components", m.components.size()},
         {"closed_components", genus_of_closed_components(m).size()},
         {"genus_of_closed_components", genus_of_closed_components(m)},
+        {"largest_component", largest_component_json(m)},
         {"coherently_oriented", c.coherently_oriented()},
         {"inconsistently_oriented_edges", m.inconsistently_oriented_edges},
         {"degenerate_faces", c.faces.degenerate_faces},
@@ -88,9 +89,9 @@ std::string summary(const std::string& path, const MeshCheck& c) {
          " triangles (" + std::to_string(m.unreferenced_vertices) + " unreferenced, " +
          std::to_string(c.coincident_vertices) + " coincident vertices)\n";
     s += "  " + std::to_string(m.components.size()) +
-         " components (genus of closed ones: " + genus_of_closed_components_text(m) +
-         "); boundary: " + std::to_string(m.boundary_edges) + " edges in " +
-         std::to_string(m.boundary_loops) + " loops\n";
+         " components (genus of closed ones: " + genus_of_closed_components_text(m) + "; " +
+         largest_component_text(m) + "); boundary: " + std::to_string(m.boundary_edges) +
+         " edges in " + std::to_string(m.boundary_loops) + " loops\n";
     s += "  non-manifold: " + std::to_string(m.non_manifold_edges) + " edges, " +
          std::to_string(m.non_manifold_vertices) + " vertices; orientation: " +
          (c.coherently_oriented()

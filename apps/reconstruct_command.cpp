@@ -129,6 +129,7 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"inconsistently_oriented_edges", m.inconsistently_oriented_edges},
               {"components", m.components.size()},
               {"genus_of_closed_components", genus_of_closed_components(m)},
+              {"largest_component", largest_component_json(m)},
               {"vertex_copies_for_non_manifold_points", r.vertex_copies},
               {"components_turned_outwards", r.flipped_components}}},
             {"rsr",
@@ -176,11 +177,12 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
                     e.merged_by_l_min, e.unresolved_crossings);
     }
     const std::string genus = genus_of_closed_components_text(m);
+    const std::string largest = largest_component_text(m);
     std::printf(
-        "  %zu components (genus of closed ones: %s), %zu handles; boundary: %zu edges in %zu "
-        "loops; non-manifold: %zu edges, %zu vertices\n",
-        m.components.size(), genus.c_str(), r.handles, m.boundary_edges, m.boundary_loops,
-        m.non_manifold_edges, m.non_manifold_vertices);
+        "  %zu components (genus of closed ones: %s; %s), %zu handles; boundary: %zu edges in "
+        "%zu loops; non-manifold: %zu edges, %zu vertices\n",
+        m.components.size(), genus.c_str(), largest.c_str(), r.handles, m.boundary_edges,
+        m.boundary_loops, m.non_manifold_edges, m.non_manifold_vertices);
     double total = 0;
     for (const auto& t : r.timings) total += t.second;
     std::printf("  %.2f s, peak memory %.0f MB\n", total, double(peak_memory_bytes()) / 1e6);

@@ -79,12 +79,14 @@ void FilterHrsrPlugin::log_summary(const hrsr::ReconstructionReport& r, double s
                     r.dropped_small_coarse_component.size(),
                 r.not_in_triangle.size(), r.merged_points,
                 r.preprocess.count(hrsr::PointFate::Duplicate), 100.0 * r.vertex_reference_ratio);
+    const hrsr::ComponentTopology* largest = hrsr::largest_component(m);
     log_message("HRsR: %zu vertices, %zu triangles, %zu boundary edges in %zu loops, %zu "
-                "non-manifold edges, %zu components (genus of closed ones: %s), %zu handles, "
-                "%.2f s",
+                "non-manifold edges, %zu components (genus of closed ones: %s), largest of genus "
+                "%ld with %zu boundary loops, %zu handles, %.2f s",
                 m.vertices, m.faces, m.boundary_edges, m.boundary_loops, m.non_manifold_edges,
                 m.components.size(), genus.isEmpty() ? "none" : genus.toStdString().c_str(),
-                r.handles, seconds);
+                largest ? largest->genus() : 0L, largest ? largest->boundary_loops : 0, r.handles,
+                seconds);
 }
 
 // A new layer is added; the input only changes its selection (select_dropped). MM_VERTNUMBER

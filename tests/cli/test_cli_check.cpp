@@ -36,6 +36,9 @@ TEST_F(CliCheck, TorusJson) {
     EXPECT_EQ(j["boundary_edges"], 0);
     EXPECT_EQ(j["components"], 1);
     EXPECT_EQ(j["genus_of_closed_components"], nlohmann::json::array({1}));
+    EXPECT_EQ(
+        j["largest_component"],
+        nlohmann::json({{"vertices", 512}, {"faces", 1024}, {"genus", 1}, {"boundary_loops", 0}}));
     EXPECT_EQ(j["coherently_oriented"], true);
     EXPECT_EQ(j["self_intersecting_pairs"], 0);
     EXPECT_EQ(j["duplicate_faces"], 0);
@@ -114,6 +117,7 @@ TEST_F(CliCheck, ChecksWhatReconstructWrites) {
                             "non_manifold_edges", "non_manifold_vertices", "components"})
         EXPECT_EQ(c[key], report["mesh"][key]) << key;
     EXPECT_EQ(c["genus_of_closed_components"], report["mesh"]["genus_of_closed_components"]);
+    EXPECT_EQ(c["largest_component"], report["mesh"]["largest_component"]);
     EXPECT_EQ(c["input"]["present_as_vertices"], report["points"]["referenced"]);
     EXPECT_EQ(c["degenerate_faces"], 0);
     EXPECT_EQ(c["duplicate_faces"], 0);

@@ -70,6 +70,10 @@ TEST_F(CliReconstruct, WritesAMeshOverTheInputPointsAndAReport) {
               mesh.at("components").get<std::size_t>());
     for (const nlohmann::json& genus : mesh.at("genus_of_closed_components"))
         EXPECT_GE(genus.get<long>(), 0);
+    const nlohmann::json& largest = mesh.at("largest_component");
+    EXPECT_LE(largest.at("faces").get<long>(), mesh.at("faces").get<long>());
+    EXPECT_GE(largest.at("genus").get<long>(), 0);
+    EXPECT_LE(largest.at("boundary_loops").get<long>(), mesh.at("boundary_loops").get<long>());
     ASSERT_TRUE(report.at("rsr").at("handles").is_number_unsigned());
     ASSERT_TRUE(report.at("timings").is_array());
     EXPECT_FALSE(report.at("timings").empty());

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace hrsr {
 namespace {
 
@@ -21,6 +23,16 @@ MeshCheck check(const TestMesh& m, const CheckOptions& o = {}) {
 std::uint32_t add_vertex(TestMesh& m, const Vec3& p) {
     m.positions.push_back(p);
     return std::uint32_t(m.positions.size() - 1);
+}
+
+/// Adds `other` to `m` as a separate piece.
+void append(TestMesh& m, const TestMesh& other) {
+    const auto offset = std::uint32_t(m.positions.size());
+    m.positions.insert(m.positions.end(), other.positions.begin(), other.positions.end());
+    for (Triangle f : other.triangles) {
+        for (std::uint32_t& v : f) v += offset;
+        m.triangles.push_back(f);
+    }
 }
 
 TEST(Check, ClosedSphereIsGenusZeroWithoutBoundary) {
@@ -74,17 +86,42 @@ TEST(Check, PatchHasOneBoundaryLoop) {
 
 TEST(Check, TwoComponentsAreCountedSeparately) {
     TestMesh m = testing::uv_sphere();
-    const TestMesh t = testing::shifted(testing::torus(), Vec3(5, 0, 0));
-    const auto offset = std::uint32_t(m.positions.size());
-    m.positions.insert(m.positions.end(), t.positions.begin(), t.positions.end());
-    for (Triangle f : t.triangles) {
-        for (std::uint32_t& v : f) v += offset;
-        m.triangles.push_back(f);
-    }
+    append(m, testing::shifted(testing::torus(), Vec3(5, 0, 0)));
     const MeshCheck c = check(m);
     ASSERT_EQ(c.topology.components.size(), 2u);
     EXPECT_EQ(c.topology.components[0].genus(), 0);
     EXPECT_EQ(c.topology.components[1].genus(), 1);
+}
+
+TEST(Check, LargestComponentIsTheOneWithMostTriangles) {
+    TestMesh m = testing::shifted(testing::torus(), Vec3(5, 0, 0));
+    const TestMesh sphere = testing::uv_sphere();
+    ASSERT_LT(sphere.triangles.size(), m.triangles.size());
+    append(m, sphere);
+    const MeshCheck c = check(m);
+    const ComponentTopology* largest = largest_component(c.topology);
+    ASSERT_NE(largest, nullptr);
+    EXPECT_EQ(largest->faces, testing::torus().triangles.size());
+    EXPECT_EQ(largest->genus(), 1);
+    EXPECT_EQ(largest_component(MeshStats{}), nullptr);
+}
+
+// Holes are boundary loops, not lost handles: a torus with two separate triangles removed is
+// still of genus 1 (χ = −2, b = 2), which is how an open reconstruction is judged.
+TEST(Check, TorusWithHolesKeepsGenusOne) {
+    TestMesh m = testing::torus();
+    const long middle = long(m.triangles.size() / 2);
+    const Triangle first = m.triangles.front(), far = m.triangles[std::size_t(middle)];
+    for (std::uint32_t v : first)
+        ASSERT_EQ(std::count(far.begin(), far.end(), v), 0) << "the two holes must not touch";
+    m.triangles.erase(m.triangles.begin() + middle);
+    m.triangles.erase(m.triangles.begin());
+    const MeshCheck c = check(m);
+    EXPECT_EQ(c.topology.boundary_loops, 2u);
+    ASSERT_EQ(c.topology.components.size(), 1u);
+    EXPECT_FALSE(c.topology.components[0].closed());
+    EXPECT_EQ(c.topology.components[0].euler(), -2);
+    EXPECT_EQ(largest_component(c.topology)->genus(), 1);
 }
 
 TEST(Check, DuplicatedFaceIsFoundNotReportedAsIntersection) {

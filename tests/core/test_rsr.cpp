@@ -391,7 +391,27 @@ INSTANTIATE_TEST_SUITE_P(SharedData, RsrClosedModel,
                                            ModelCase{"3holes_genus3.ply", 3}),
                          model_name);
 
-// Enable when feline is fixed: it currently comes out with cracks (open, several components).
+// The feline's wings and tail are 2–3 units thick against a median vertex spacing of 1.6 (and
+// its vertices include near-coincident pairs): there the estimated normals flip in patches and
+// the rotation folds, so RsR leaves holes (docs/STATUS.md, known gap 3). Its topology is still
+// right: the surface has genus 2 once the holes are counted as boundary loops (χ = 2 − 2g − b).
+// Measured at n = 20: 40,654 of 40,751 triangles in one piece, 653 of 61,453 edges on holes.
+TEST(RsrModelOfKnownGenusWithHoles, FelineIsOnePieceOfGenus2) {
+    PointSet cloud;
+    Result r;
+    if (!reconstruct_model("feline_genus2.ply", cloud, r)) {
+        GTEST_SKIP() << "shared data not available";
+    }
+    expect_manifold(r);
+    const ComponentTopology* largest = largest_component(r.stats);
+    ASSERT_NE(largest, nullptr);
+    EXPECT_EQ(largest->genus(), 2);
+    EXPECT_GE(double(largest->faces), 0.99 * double(r.stats.faces));
+    EXPECT_LE(double(r.stats.boundary_edges), 0.02 * double(r.stats.edges));
+    EXPECT_GE(r.report.vertex_reference_ratio, 0.995);
+}
+
+// The target the test above stops short of; enable when the thin parts close.
 TEST(RsrClosedModelKnownFailure, DISABLED_FelineIsClosedGenus2) {
     expect_closed_model("feline_genus2.ply", 2);
 }

@@ -143,4 +143,11 @@ double signed_volume(const std::vector<Vec3>& p, const std::vector<Triangle>& tr
     return volume / 6.0;
 }
 
+const ComponentTopology* largest_component(const MeshStats& mesh) {
+    const ComponentTopology* largest = nullptr;
+    for (const ComponentTopology& c : mesh.components)
+        if (!largest || c.faces > largest->faces) largest = &c;
+    return largest;
+}
+
 } // namespace hrsr

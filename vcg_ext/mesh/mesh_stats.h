@@ -32,6 +32,11 @@ struct MeshStats {
     long euler() const { return long(vertices) - long(edges) + long(faces); }
 };
 
+/// The component with the most triangles (the first of equals), or nullptr for an empty mesh:
+/// the reconstructed surface when small pieces split off. Its genus counts its holes as
+/// boundary loops, so a surface with the right handles but left open still reports them.
+const ComponentTopology* largest_component(const MeshStats& mesh);
+
 /// Measures `triangles` over `vertex_count` vertices; optionally also gives each triangle's
 /// face-connected component (through shared edges; ids in order of first triangle).
 MeshStats measure_mesh(std::size_t vertex_count, const std::vector<Triangle>& triangles,
