@@ -64,6 +64,9 @@ CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& a) {
     c->add_option("--refinement-iterations", a.options.reexpand.refinement_iterations,
                   "HRsR: flip passes around each split vertex")
         ->capture_default_str();
+    c->add_option("--fold-repair-rounds", a.options.rsr.fold_repair_rounds,
+                  "Rounds of edge flips that undo folds (intersecting triangles); 0 = off")
+        ->capture_default_str();
     add_threads_option(*c, a.threads);
     c->add_option("--report", a.report,
                   "Write a JSON report (counts, topology, dropped points, timings)");
@@ -103,7 +106,8 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"collapse_k", a.options.collapse.collapse_k},
               {"l_min", r.l_min},
               {"l_min_mode", a.options.reexpand.l_min_mode == LMinMode::Stop ? "stop" : "filter"},
-              {"refinement_iterations", a.options.reexpand.refinement_iterations}}},
+              {"refinement_iterations", a.options.reexpand.refinement_iterations},
+              {"fold_repair_rounds", a.options.rsr.fold_repair_rounds}}},
             {"points",
              {{"input", r.preprocess.input_points},
               {"used", r.points_used},
@@ -139,6 +143,10 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"handle_edges", r.handle_edges},
               {"handles", r.handles},
               {"ear_edges", r.ear_edges}}},
+            {"fold_repair",
+             {{"intersecting_pairs_found", r.fold_repair.pairs_before},
+              {"flips", r.fold_repair.flips},
+              {"intersecting_pairs_left", r.fold_repair.pairs_after}}},
             {"hrsr",
              {{"coarse_points", r.coarse_points},
               {"records", e.records},
@@ -152,6 +160,7 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"boundary_triangles_removed", e.triangles_removed},
               {"improvement_flips", e.improvement_flips},
               {"merged_by_l_min", e.merged_by_l_min},
+
               {"stopped_at_l_min", e.stopped_at_l_min}}},
             {"preprocess", to_json(r.preprocess)},
             {"timings", timings},
@@ -183,6 +192,9 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
         "%zu loops; non-manifold: %zu edges, %zu vertices\n",
         m.components.size(), genus.c_str(), largest.c_str(), r.handles, m.boundary_edges,
         m.boundary_loops, m.non_manifold_edges, m.non_manifold_vertices);
+    if (a.options.rsr.fold_repair_rounds > 0)
+        std::printf("  folds: %zu intersecting triangle pairs, %zu edge flips, %zu pairs left\n",
+                    r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after);
     double total = 0;
     for (const auto& t : r.timings) total += t.second;
     std::printf("  %.2f s, peak memory %.0f MB\n", total, double(peak_memory_bytes()) / 1e6);

@@ -87,6 +87,9 @@ void FilterHrsrPlugin::log_summary(const hrsr::ReconstructionReport& r, double s
                 m.components.size(), genus.isEmpty() ? "none" : genus.toStdString().c_str(),
                 largest ? largest->genus() : 0L, largest ? largest->boundary_loops : 0, r.handles,
                 seconds);
+    log_message("HRsR: fold repair (D-26): %zu intersecting triangle pairs, %zu edge flips, %zu "
+                "pairs left",
+                r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after);
 }
 
 // A new layer is added; the input only changes its selection (select_dropped). MM_VERTNUMBER

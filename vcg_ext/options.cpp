@@ -36,6 +36,9 @@ void validate(const RsrOptions& o) {
                                         std::to_string(o.max_handle_hops) + ")");
     require(o.handles >= -1, "handles must be -1 (automatic), 0 (none) or a positive limit (got " +
                                  std::to_string(o.handles) + ")");
+    require(o.fold_repair_rounds >= 0 && o.fold_repair_rounds <= 100,
+            "fold-repair-rounds must be between 0 and 100 (got " +
+                std::to_string(o.fold_repair_rounds) + ")");
 }
 
 void validate(const CollapseOptions& o) {

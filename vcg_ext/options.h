@@ -55,6 +55,9 @@ struct RsrOptions {
     /// Flip closed output components whose signed volume is negative, so normals and face
     /// winding point outwards (D-6).
     bool orient_outward = true;
+    /// D-26: rounds of edge flips that undo folds (intersecting triangles) in the output, of RsR
+    /// and of HRsR alike; 0 skips the search for them (about one `hrsr check` intersection test).
+    int fold_repair_rounds = 8;
 };
 
 void validate(const RsrOptions& options);

@@ -2,6 +2,7 @@
 
 #include "errors.h"
 #include "hrsr/collapse.h"
+#include "hrsr/fold_repair.h"
 #include "mesh/fans.h"
 #include "preprocess/components.h"
 #include "preprocess/pca_normals.h"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 namespace hrsr {
 
@@ -105,6 +107,21 @@ Reconstruction make_output(const PreparedCloud& cloud,
     report.mesh = measure_mesh(positions.size(), mesh.triangles, &component);
     if (outward) orient_outward(positions, report.mesh, component, mesh, report);
     return mesh;
+}
+
+// D-26 on the finished mesh, in the normalised coordinates everything else uses (D-2): at an
+// offset of 1e12 the input's own are too coarse for a triangle test, and the same cloud moved or
+// scaled must give the same mesh.
+void repair_output_folds(const PreparedCloud& cloud, const std::vector<std::uint32_t>& vertex_point,
+                         int rounds, const Execution& exec, Reconstruction& mesh,
+                         ReconstructionReport& report) {
+    if (rounds <= 0) return;
+    if (exec.progress) exec.progress->begin("fold repair");
+    Timer timer(report.timings, "fold repair");
+    std::vector<Vec3> positions;
+    positions.reserve(vertex_point.size());
+    for (std::uint32_t p : vertex_point) positions.push_back(cloud.positions[p]);
+    report.fold_repair = repair_folds(positions, mesh.triangles, rounds, exec);
 }
 
 // A phase boundary: progress, and the chance to cancel before the phase's work.
@@ -204,12 +221,14 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     rsr::CloudMesh rsr_mesh = rsr::reconstruct_cloud(cloud, options, exec, observer);
     take_rsr_stats(rsr_mesh, report);
     begin_phase(exec, "assembly");
-    Timer timer(report.timings, "assembly");
+    std::optional<Timer> assembly(std::in_place, report.timings, "assembly");
     CompactMesh m = compact(cloud.size(), std::move(rsr_mesh.triangles));
     for (std::uint32_t p : m.unused) report.not_in_triangle.push_back(cloud.input_index[p]);
     report.vertex_copies = m.copies;
     Reconstruction mesh =
         make_output(cloud, m.vertex_point, std::move(m.triangles), options.orient_outward, report);
+    assembly.reset();
+    repair_output_folds(cloud, m.vertex_point, options.fold_repair_rounds, exec, mesh, report);
     account(input, mesh, report);
     require_triangles(mesh, report);
     return mesh;
@@ -275,7 +294,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     }
 
     begin_phase(exec, "assembly");
-    Timer timer(report.timings, "assembly");
+    std::optional<Timer> assembly(std::in_place, report.timings, "assembly");
     collapsed = CollapsedCloud();
     std::vector<std::uint8_t> dropped_root(cloud.size(), 0);
     for (std::uint32_t node : dropped_nodes) dropped_root[node] = 1;
@@ -298,6 +317,8 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     for (std::uint32_t v : out.vertex_point) vertex_point.push_back(fine.vertex_node[v]);
     Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles),
                                       options.rsr.orient_outward, report);
+    assembly.reset();
+    repair_output_folds(cloud, vertex_point, options.rsr.fold_repair_rounds, exec, mesh, report);
     account(input, mesh, report);
     require_triangles(mesh, report);
     return mesh;

@@ -1,6 +1,7 @@
 // The library's entry point: point set in, triangle mesh and report out.
 #pragma once
 
+#include "hrsr/fold_repair.h"
 #include "hrsr/reexpansion.h"
 #include "mesh/mesh_stats.h"
 #include "options.h"
@@ -36,7 +37,8 @@ struct ReconstructionReport {
 
     std::size_t candidates = 0, tree_edges = 0, face_split_edges = 0, handle_edges = 0,
                 ear_edges = 0;
-    std::size_t handles = 0; ///< handles inserted (merges of two faces), all components
+    std::size_t handles = 0;     ///< handles inserted (merges of two faces), all components
+    FoldRepairStats fold_repair; ///< D-26, on the output mesh
     MeshStats mesh;
     std::vector<std::pair<std::string, double>>
         timings; ///< (phase, seconds), summed over components

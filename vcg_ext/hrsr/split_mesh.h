@@ -87,9 +87,16 @@ public:
     std::uint32_t vertex_of(const SFace* f, int k) const { return index(f->cV(k)); }
     /// The live triangles, in face order.
     std::vector<Triangle> triangles() const;
+    /// The live faces, in the same order as triangles().
+    std::vector<SFace*> live_faces();
+    /// A face's position in the face storage (stable: faces never move).
+    std::size_t slot(const SFace* f) const { return std::size_t(f - mesh_.face.data()); }
+    std::size_t face_slots() const { return mesh_.face.size(); }
     const SMesh& vcg_mesh() const { return mesh_; }
 
 private:
+    void link_faces(std::size_t vertex_count);
+    [[noreturn]] static void throw_not_manifold();
     void set_face_of(SFace* f);
     /// Number of edges at v and whether it lies on the boundary, by walking its faces.
     std::size_t valence(std::uint32_t v, bool& boundary) const;

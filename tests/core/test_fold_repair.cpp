@@ -1,0 +1,159 @@
+// D-26: the flips that undo folds, and the triangle test they share with `hrsr check`.
+#include "hrsr/fold_repair.h"
+#include "io/point_set_reader.h"
+#include "mesh/mesh_stats.h"
+#include "mesh/self_intersections.h"
+#include "mesh/triangle_intersection.h"
+#include "mesh/vcg_mesh.h"
+#include "reconstruction.h"
+
+#include <gtest/gtest.h>
+
+#include <vcg/complex/algorithms/clean.h>
+
+#include <random>
+#include <tuple>
+
+namespace hrsr {
+namespace {
+
+// Random triangle pairs sharing 0, 1 or 2 corners, on a coarse lattice (so that touching,
+// coplanar and collinear cases come up) and in general position.
+TEST(TriangleIntersection, AgreesWithVcglibsFaceFaceTest) {
+    std::mt19937 random(7);
+    std::size_t intersecting[3] = {0, 0, 0}, tested[3] = {0, 0, 0};
+    for (int trial = 0; trial < 20000; ++trial) {
+        const bool lattice = trial % 2 == 0;
+        std::uniform_int_distribution<int> cell(0, 2);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        std::vector<Vec3> positions(6);
+        for (Vec3& p : positions)
+            p = lattice ? Vec3(cell(random), cell(random), cell(random))
+                        : Vec3(unit(random), unit(random), unit(random));
+        const int shared = trial % 3;
+        Triangle a{0, 1, 2}, b{3, 4, 5};
+        for (int k = 0; k < shared; ++k) b[std::size_t(k)] = a[std::size_t(2 - k)];
+        std::shuffle(b.begin(), b.end(), random);
+        VcgMesh m;
+        build_vcg_mesh(positions, {}, {a, b}, m);
+        const auto corners = [&](const Triangle& t) {
+            return Corners{positions[t[0]], positions[t[1]], positions[t[2]]};
+        };
+        const bool ours = mesh_triangles_intersect(corners(a), a, corners(b), b);
+        const bool theirs =
+            vcg::tri::Clean<VcgMesh>::TestFaceFaceIntersection(&m.face[0], &m.face[1]);
+        ASSERT_EQ(ours, theirs) << "trial " << trial << ", " << shared << " shared corners";
+        ++tested[shared];
+        intersecting[shared] += ours;
+    }
+    // The cases are not all trivial: both outcomes occur with 0 and 1 shared corners.
+    for (int shared = 0; shared < 2; ++shared) {
+        EXPECT_GT(intersecting[shared], tested[shared] / 20) << shared;
+        EXPECT_LT(intersecting[shared], tested[shared]) << shared;
+    }
+    EXPECT_EQ(intersecting[2], 0u); // a shared edge never counts
+}
+
+struct Output {
+    std::vector<Vec3> positions; ///< the output vertices at their input coordinates
+    std::vector<Triangle> triangles;
+    FoldRepairStats repair;
+};
+
+Output reconstruct_owl(int fold_repair_rounds, int threads = 0) {
+    const PointSet cloud = io::read_point_set(HRSR_SAMPLE);
+    ReconstructionOptions options;
+    options.rsr.fold_repair_rounds = fold_repair_rounds;
+    ReconstructionReport report;
+    const Reconstruction r = reconstruct(cloud, options, {threads, nullptr}, report);
+    Output out;
+    for (std::uint32_t i : r.vertex_input_index) out.positions.push_back(cloud.positions[i]);
+    out.triangles = r.triangles;
+    out.repair = report.fold_repair;
+    return out;
+}
+
+// Flips keep V, E, F, the boundary and every component's genus, and a manifold stays one.
+void expect_same_topology(const MeshStats& a, const MeshStats& b) {
+    const auto counts = [](const MeshStats& m) {
+        return std::make_tuple(m.vertices, m.edges, m.faces, m.boundary_edges, m.boundary_loops);
+    };
+    EXPECT_EQ(counts(a), counts(b));
+    ASSERT_EQ(a.components.size(), b.components.size());
+    for (std::size_t c = 0; c < a.components.size(); ++c)
+        EXPECT_EQ(a.components[c].genus(), b.components[c].genus());
+    EXPECT_EQ(b.non_manifold_edges, 0u);
+    EXPECT_EQ(b.non_manifold_vertices, 0u);
+    EXPECT_EQ(b.inconsistently_oriented_edges, 0u);
+}
+
+// The shipped owl's HRsR mesh has folds (15 intersecting pairs when this test was written).
+TEST(FoldRepair, FewerIntersectionsSameVerticesAndTopology) {
+    const Output plain = reconstruct_owl(0);
+    const std::vector<TrianglePair> before =
+        self_intersecting_pairs(plain.positions, plain.triangles, {});
+    ASSERT_GT(before.size(), 0u) << "the sample no longer has a fold to repair";
+    EXPECT_EQ(plain.repair.pairs_before, 0u); // not searched at all with 0 rounds
+
+    std::vector<Triangle> repaired = plain.triangles;
+    const FoldRepairStats stats = repair_folds(plain.positions, repaired, 2, {});
+    EXPECT_EQ(stats.pairs_before, before.size());
+    const std::vector<TrianglePair> after = self_intersecting_pairs(plain.positions, repaired, {});
+    EXPECT_EQ(stats.pairs_after, after.size()); // the repair's own count is exact
+    EXPECT_LT(after.size(), before.size());
+    EXPECT_GT(stats.flips, 0u);
+    expect_same_topology(measure_mesh(plain.positions.size(), plain.triangles),
+                         measure_mesh(plain.positions.size(), repaired));
+    // Each flip rewrites two triangles in place; the others keep their slot and corners.
+    ASSERT_EQ(repaired.size(), plain.triangles.size());
+    std::size_t changed = 0;
+    for (std::size_t t = 0; t < repaired.size(); ++t) changed += repaired[t] != plain.triangles[t];
+    EXPECT_GT(changed, 0u);
+    EXPECT_LE(changed, 2 * stats.flips);
+
+    // Through reconstruct(), which repairs in its normalised coordinates (D-2): a repair,
+    // reported, that leaves fewer pairs in the written coordinates too.
+    const Output through = reconstruct_owl(8);
+    // (A pair that only touches can count on one side of the rounding and not the other.)
+    EXPECT_NEAR(double(through.repair.pairs_before), double(before.size()),
+                1.0 + 0.1 * double(before.size()));
+    EXPECT_LT(through.repair.pairs_after, through.repair.pairs_before);
+    EXPECT_GT(through.repair.flips, 0u);
+    EXPECT_LT(self_intersecting_pairs(through.positions, through.triangles, {}).size(),
+              before.size());
+    expect_same_topology(measure_mesh(plain.positions.size(), plain.triangles),
+                         measure_mesh(through.positions.size(), through.triangles));
+}
+
+TEST(FoldRepair, SameResultOnOneAndTwoThreads) {
+    const Output plain = reconstruct_owl(0, 1);
+    std::vector<Triangle> one = plain.triangles, two = plain.triangles;
+    const FoldRepairStats a = repair_folds(plain.positions, one, 2, {1, nullptr});
+    const FoldRepairStats b = repair_folds(plain.positions, two, 2, {2, nullptr});
+    EXPECT_EQ(one, two);
+    EXPECT_EQ(a.flips, b.flips);
+    EXPECT_EQ(a.pairs_after, b.pairs_after);
+}
+
+TEST(FoldRepair, NothingToDoOnACleanMeshOrWithZeroRounds) {
+    // A flat 3 × 3 grid of quads: no intersection, so no flip.
+    std::vector<Vec3> positions;
+    std::vector<Triangle> triangles;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) positions.emplace_back(x, y, 0);
+    for (std::uint32_t y = 0; y < 3; ++y)
+        for (std::uint32_t x = 0; x < 3; ++x) {
+            const std::uint32_t v = 4 * y + x;
+            triangles.push_back({v, v + 1, v + 5});
+            triangles.push_back({v, v + 5, v + 4});
+        }
+    const std::vector<Triangle> original = triangles;
+    const FoldRepairStats stats = repair_folds(positions, triangles, 2, {});
+    EXPECT_EQ(stats.pairs_before, 0u);
+    EXPECT_EQ(stats.flips, 0u);
+    EXPECT_EQ(triangles, original);
+    EXPECT_EQ(repair_folds(positions, triangles, 0, {}).pairs_before, 0u);
+}
+
+} // namespace
+} // namespace hrsr
