@@ -314,14 +314,20 @@ public:
     Repair(Region& region, const std::vector<std::uint32_t>& representative, Geometry& geometry,
            const FaceGrid& grid)
         : region_(region), mesh_(region.mesh()), representative_(representative),
-          geometry_(geometry), grid_(grid) {}
+          geometry_(geometry), grid_(grid), seen_in_search_(geometry.size(), 0) {}
 
     // From the pairs found by the grid: flips, round by round; `stats` gets the flips, the
     // rounds and the pairs left.
     void run(std::vector<TrianglePair> pairs, int rounds, FoldRepairStats& stats) {
         // A pair that found no flip is tried again only once a face around it has changed.
         std::vector<int> flipped_in_round(geometry_.size(), -1);
-        std::map<TrianglePair, int> settled; // pair → round it found no flip in
+        // A flip changes only faces that held its four corners, so a change around a pair shows
+        // among the faces that were around it when it settled.
+        struct Settled {
+            int round;                         ///< it found no flip in this round
+            std::vector<std::uint32_t> around; ///< the faces around it then
+        };
+        std::map<TrianglePair, Settled> settled;
         for (int round = 0; round < rounds && !pairs.empty(); ++round) {
             std::vector<std::uint32_t> changed;
             std::vector<std::uint8_t> waiting(geometry_.size(), 0);
@@ -330,13 +336,13 @@ public:
                 intersecting_[p.first] = intersecting_[p.second] = 1;
             for (const TrianglePair& p : pairs) {
                 if (waiting[p.first] || waiting[p.second]) continue;
-                const std::vector<std::uint32_t>& around = faces_around(p);
                 const auto was = settled.find(p);
                 if (was != settled.end() &&
-                    std::none_of(around.begin(), around.end(), [&](std::uint32_t f) {
-                        return flipped_in_round[f] >= was->second;
-                    }))
+                    std::none_of(
+                        was->second.around.begin(), was->second.around.end(),
+                        [&](std::uint32_t f) { return flipped_in_round[f] >= was->second.round; }))
                     continue;
+                const std::vector<std::uint32_t>& around = faces_around(p);
                 bool flipped = false;
                 for (std::uint32_t f : around) {
                     if (waiting[f]) continue;
@@ -350,7 +356,7 @@ public:
                     flipped = true;
                     break;
                 }
-                if (!flipped) settled[p] = round;
+                if (!flipped) settled[p] = {round, around};
             }
             if (changed.empty()) break;
             ++stats.rounds;
@@ -374,8 +380,15 @@ private:
             if (it != flipped_in_cell_.end())
                 near_.insert(near_.end(), it->second.begin(), it->second.end());
         });
-        std::sort(near_.begin(), near_.end());
-        near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
+        // Each face once (it is filed in several cells), marked with this search's number.
+        ++search_;
+        std::size_t unique = 0;
+        for (std::uint32_t c : near_)
+            if (seen_in_search_[c] != search_) {
+                seen_in_search_[c] = search_;
+                near_[unique++] = c;
+            }
+        near_.resize(unique);
         // Kept with their boxes: each is tested against four triangles.
         std::size_t kept = 0;
         near_box_.resize(near_.size());
@@ -500,7 +513,9 @@ private:
     Geometry& geometry_;
     const FaceGrid& grid_;
     std::vector<std::uint32_t> near_, around_;
-    std::vector<Box> near_box_;              ///< the boxes of near_
+    std::vector<Box> near_box_;                 ///< the boxes of near_
+    std::vector<std::uint32_t> seen_in_search_; ///< per face: the last search that listed it
+    std::uint32_t search_ = 0;
     std::vector<std::uint8_t> intersecting_; ///< per face: in a pair at the start of the round
     /// Flipped faces by the cells their boxes covered after each flip.
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> flipped_in_cell_;
