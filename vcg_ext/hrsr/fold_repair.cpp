@@ -1,8 +1,7 @@
 #include "hrsr/fold_repair.h"
 
 #include "hrsr/split_mesh.h"
-#include "mesh/self_intersections.h"
-#include "mesh/triangle_intersection.h"
+#include "mesh/triangle_grid.h"
 #include "mesh/welding.h"
 
 #include <algorithm>
@@ -23,193 +22,6 @@ using reexpand::SplitMesh;
 // and a later round works around the corners of earlier flips.
 constexpr int kRegionRings = 6;
 
-struct Box {
-    Vec3 lo, hi;
-    void add(const Vec3& p) {
-        for (int k = 0; k < 3; ++k) {
-            lo[k] = std::min(lo[k], p[k]);
-            hi[k] = std::max(hi[k], p[k]);
-        }
-    }
-    bool overlaps(const Box& o) const {
-        for (int k = 0; k < 3; ++k)
-            if (hi[k] < o.lo[k] || o.hi[k] < lo[k]) return false;
-        return true;
-    }
-};
-
-Vec3 unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 n = (b - a) ^ (c - a);
-    const double length = n.Norm();
-    return length > 0 ? n / length : Vec3(0, 0, 0);
-}
-
-// The triangles (welded corner ids: copies at one position are one vertex, as in
-// self_intersections.h) over fixed positions, with the geometric tests the repair needs.
-class Geometry {
-public:
-    Geometry(const std::vector<Vec3>& positions, std::vector<Triangle> triangles)
-        : positions_(positions), triangles_(std::move(triangles)) {}
-
-    const Triangle& triangle(std::uint32_t f) const { return triangles_[f]; }
-    void set(std::uint32_t f, const Triangle& t) { triangles_[f] = t; }
-    std::size_t size() const { return triangles_.size(); }
-    const Vec3& position(std::uint32_t v) const { return positions_[v]; }
-
-    Box box(const Triangle& t) const {
-        Box b{positions_[t[0]], positions_[t[0]]};
-        b.add(positions_[t[1]]);
-        b.add(positions_[t[2]]);
-        return b;
-    }
-    Vec3 normal(const Triangle& t) const {
-        return unit_normal(positions_[t[0]], positions_[t[1]], positions_[t[2]]);
-    }
-    /// Not tested, as in self_intersections.h: a repeated corner or no area.
-    bool degenerate(const Triangle& t) const {
-        return t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || normal(t) == Vec3(0, 0, 0);
-    }
-    bool intersect(const Triangle& a, const Triangle& b) const {
-        return box(a).overlaps(box(b)) && intersect_exactly(a, b);
-    }
-    /// The same without the box test (the caller has done it).
-    bool intersect_exactly(const Triangle& a, const Triangle& b) const {
-        return mesh_triangles_intersect(corners(a), a, corners(b), b);
-    }
-
-private:
-    Corners corners(const Triangle& t) const {
-        return {positions_[t[0]], positions_[t[1]], positions_[t[2]]};
-    }
-    const std::vector<Vec3>& positions_;
-    std::vector<Triangle> triangles_;
-};
-
-// Faces filed by the cells of a uniform grid (about the mean face size) that their box covers,
-// as the faces stand when the grid is built. A face flipped later may reach other cells: the
-// repair adds its flipped faces to every query.
-class FaceGrid {
-public:
-    FaceGrid(const Geometry& g, const Execution& exec) {
-        Box all{g.position(g.triangle(0)[0]), g.position(g.triangle(0)[0])};
-        double extent_sum = 0;
-        for (std::uint32_t f = 0; f < g.size(); ++f) {
-            const Box b = g.box(g.triangle(f));
-            all.add(b.lo);
-            all.add(b.hi);
-            const Vec3 d = b.hi - b.lo;
-            extent_sum += std::max(d[0], std::max(d[1], d[2]));
-        }
-        origin_ = all.lo;
-        const Vec3 size = all.hi - all.lo;
-        const double largest = std::max(size[0], std::max(size[1], size[2]));
-        // At most kMaxCellsPerAxis cells a side, so that a cell's index fits in 32 bits.
-        cell_ = std::max({2.0 * extent_sum / double(g.size()), largest / kMaxCellsPerAxis, 1e-300});
-        for (int k = 0; k < 3; ++k) cells_[k] = std::uint64_t(size[k] / cell_) + 1;
-        for (std::uint32_t f = 0; f < g.size(); ++f) {
-            if (exec.progress && f % 65536 == 0) // a chance to cancel in the serial part
-                exec.progress->update(0.0);      // the search below reports the fraction
-            if (!g.degenerate(g.triangle(f)))
-                for_each_cell(g.box(g.triangle(f)),
-                              [&](std::uint64_t c) { entries_.push_back(c << 32 | f); });
-        }
-        sort_by_cell(entries_);
-        for (std::size_t e = 0; e < entries_.size(); ++e)
-            if (e == 0 || cell(entries_[e]) != cell(entries_[e - 1]))
-                cell_start_.push_back(std::uint32_t(e));
-        cell_start_.push_back(std::uint32_t(entries_.size()));
-    }
-
-    /// Every intersecting pair (i < j), sorted; each pair is tested in the first cell both
-    /// boxes share only, cells in parallel blocks.
-    std::vector<TrianglePair> all_pairs(const Geometry& g, const Execution& exec) const {
-        const std::size_t cells = cell_start_.size() - 1, block = 256;
-        std::vector<std::vector<TrianglePair>> found((cells + block - 1) / block);
-        parallel_for(exec, found.size(), [&](std::size_t b) {
-            struct Member {
-                std::uint32_t face;
-                Box box;
-                Cell low; ///< the cell of the box's low corner
-            };
-            thread_local std::vector<Member> members;
-            for (std::size_t c = b * block; c < std::min(cells, (b + 1) * block); ++c) {
-                const std::uint64_t here = cell(entries_[cell_start_[c]]);
-                members.clear();
-                for (std::size_t e = cell_start_[c]; e < cell_start_[c + 1]; ++e) {
-                    const std::uint32_t f = face(entries_[e]);
-                    const Box box = g.box(g.triangle(f));
-                    members.push_back({f, box, cell_of(box.lo)});
-                }
-                for (std::size_t i = 0; i < members.size(); ++i)
-                    for (std::size_t j = i + 1; j < members.size(); ++j) {
-                        const Member &s = members[i], &t = members[j];
-                        if (!s.box.overlaps(t.box)) continue;
-                        if (index(std::max(s.low[0], t.low[0]), std::max(s.low[1], t.low[1]),
-                                  std::max(s.low[2], t.low[2])) != here)
-                            continue;
-                        if (g.intersect(g.triangle(s.face), g.triangle(t.face)))
-                            found[b].emplace_back(s.face, t.face);
-                    }
-            }
-        });
-        std::vector<TrianglePair> pairs;
-        for (const auto& f : found) pairs.insert(pairs.end(), f.begin(), f.end());
-        std::sort(pairs.begin(), pairs.end());
-        return pairs;
-    }
-
-    /// Calls visit(cell index) for every cell `box` covers.
-    template <class Visit>
-    void for_each_cell(const Box& box, Visit&& visit) const {
-        const Cell lo = cell_of(box.lo), hi = cell_of(box.hi);
-        for (std::uint64_t x = lo[0]; x <= hi[0]; ++x)
-            for (std::uint64_t y = lo[1]; y <= hi[1]; ++y)
-                for (std::uint64_t z = lo[2]; z <= hi[2]; ++z) visit(index(x, y, z));
-    }
-
-    /// Faces filed in the cells `box` covers (possibly repeated).
-    void query(const Box& box, std::vector<std::uint32_t>& out) const {
-        for_each_cell(box, [&](std::uint64_t c) {
-            auto it = std::lower_bound(entries_.begin(), entries_.end(), c << 32);
-            for (; it != entries_.end() && cell(*it) == c; ++it) out.push_back(face(*it));
-        });
-    }
-
-private:
-    static constexpr double kMaxCellsPerAxis = 1600; // 1601³ < 2³²
-
-    // Entries come in face order; a stable radix sort on the cell (4 × 8 bits) leaves them
-    // sorted by (cell, face) as std::sort would, in a fraction of its time.
-    static void sort_by_cell(std::vector<std::uint64_t>& entries) {
-        std::vector<std::uint64_t> buffer(entries.size());
-        for (int shift = 32; shift < 64; shift += 8) {
-            std::array<std::size_t, 257> start{};
-            for (std::uint64_t e : entries) ++start[((e >> shift) & 0xff) + 1];
-            for (int d = 0; d < 256; ++d) start[std::size_t(d) + 1] += start[std::size_t(d)];
-            for (std::uint64_t e : entries) buffer[start[(e >> shift) & 0xff]++] = e;
-            entries.swap(buffer);
-        }
-    }
-    using Cell = std::array<std::uint64_t, 3>;
-    static std::uint64_t cell(std::uint64_t entry) { return entry >> 32; }
-    static std::uint32_t face(std::uint64_t entry) { return std::uint32_t(entry); }
-    Cell cell_of(const Vec3& p) const {
-        Cell c;
-        for (int k = 0; k < 3; ++k)
-            c[k] = std::min(cells_[k] - 1,
-                            std::uint64_t(std::max(0.0, std::floor((p[k] - origin_[k]) / cell_))));
-        return c;
-    }
-    std::uint64_t index(std::uint64_t x, std::uint64_t y, std::uint64_t z) const {
-        return x + cells_[0] * (y + cells_[1] * z);
-    }
-    Vec3 origin_;
-    double cell_ = 1;
-    std::array<std::uint64_t, 3> cells_{1, 1, 1};
-    std::vector<std::uint64_t> entries_; ///< cell << 32 | face, sorted
-    std::vector<std::uint32_t> cell_start_;
-};
-
 // The part of the mesh the flips may touch: the faces around every vertex within `rings`
 // rings of the pairs' corners, as a SplitMesh of its own (a whole-mesh one costs more than the
 // search). Those vertices are complete: all their faces are in the region, so what can_flip
@@ -219,14 +31,7 @@ public:
     Region(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
            const std::vector<TrianglePair>& pairs, int rings) {
         const std::size_t n = positions.size();
-        // Vertex → faces.
-        std::vector<std::uint32_t> start(n + 1, 0);
-        for (const Triangle& t : triangles)
-            for (std::uint32_t v : t) ++start[v + 1];
-        for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
-        std::vector<std::uint32_t> faces(start.back()), cursor(start.begin(), start.end() - 1);
-        for (std::uint32_t f = 0; f < triangles.size(); ++f)
-            for (std::uint32_t v : triangles[f]) faces[cursor[v]++] = f;
+        const VertexCorners at = corners_by_vertex(n, triangles);
         // Rings around the pairs' corners, breadth first.
         constexpr std::uint8_t kFar = 0xff;
         std::vector<std::uint8_t> depth(n, kFar);
@@ -241,16 +46,16 @@ public:
         for (std::size_t i = 0; i < reached.size(); ++i) {
             const std::uint32_t v = reached[i];
             if (depth[v] >= rings) continue;
-            for (std::uint32_t e = start[v]; e < start[v + 1]; ++e)
-                for (std::uint32_t w : triangles[faces[e]])
+            for (std::uint32_t e = at.begin(v); e < at.end(v); ++e)
+                for (std::uint32_t w : triangles[at.corner[e] / 3])
                     if (depth[w] == kFar) {
                         depth[w] = std::uint8_t(depth[v] + 1);
                         reached.push_back(w);
                     }
         }
         for (std::uint32_t v : reached)
-            for (std::uint32_t e = start[v]; e < start[v + 1]; ++e)
-                global_face_.push_back(faces[e]);
+            for (std::uint32_t e = at.begin(v); e < at.end(v); ++e)
+                global_face_.push_back(at.corner[e] / 3);
         std::sort(global_face_.begin(), global_face_.end());
         global_face_.erase(std::unique(global_face_.begin(), global_face_.end()),
                            global_face_.end());
@@ -311,8 +116,8 @@ private:
 class Repair {
 public:
     // `geometry` holds the mesh's triangles (welded by `representative`) in face order.
-    Repair(Region& region, const std::vector<std::uint32_t>& representative, Geometry& geometry,
-           const FaceGrid& grid)
+    Repair(Region& region, const std::vector<std::uint32_t>& representative,
+           TriangleGeometry& geometry, const TriangleGrid& grid)
         : region_(region), mesh_(region.mesh()), representative_(representative),
           geometry_(geometry), grid_(grid), seen_in_search_(geometry.size(), 0) {}
 
@@ -510,8 +315,8 @@ private:
     Region& region_;
     SplitMesh& mesh_;
     const std::vector<std::uint32_t>& representative_;
-    Geometry& geometry_;
-    const FaceGrid& grid_;
+    TriangleGeometry& geometry_;
+    const TriangleGrid& grid_;
     std::vector<std::uint32_t> near_, around_;
     std::vector<Box> near_box_;                 ///< the boxes of near_
     std::vector<std::uint32_t> seen_in_search_; ///< per face: the last search that listed it
@@ -528,8 +333,8 @@ FoldRepairStats repair_folds(const std::vector<Vec3>& positions, std::vector<Tri
                              int rounds, const Execution& exec) {
     if (triangles.size() < 2 || rounds <= 0) return {};
     const std::vector<std::uint32_t> representative = same_position_representatives(positions);
-    Geometry geometry(positions, welded_triangles(triangles, representative));
-    const FaceGrid grid(geometry, exec);
+    TriangleGeometry geometry(positions, welded_triangles(triangles, representative));
+    const TriangleGrid grid(geometry, exec);
     FoldRepairStats stats;
     std::vector<TrianglePair> pairs = grid.all_pairs(geometry, exec);
     stats.pairs_before = stats.pairs_after = pairs.size();

@@ -102,7 +102,7 @@ SplitMesh::SplitMesh(const std::vector<Vec3>& positions, const std::vector<Trian
         for (int k = 0; k < 3; ++k) f->V(k) = &mesh_.vert[t[k]];
         ++f;
     }
-    link_faces(positions.size());
+    link_faces(positions.size(), triangles);
     face_of_.assign(mesh_.vert.capacity(), nullptr);
     for (SFace& face : mesh_.face) set_face_of(&face);
     // A wrongly wound or asymmetric input would corrupt every later split: refuse it (O(F)).
@@ -116,14 +116,8 @@ SplitMesh::SplitMesh(const std::vector<Vec3>& positions, const std::vector<Trian
 // Face-face adjacency from per-vertex face lists: a few times faster and several times leaner
 // than vcglib's UpdateTopology::FaceFace, which sorts every edge. An edge with more than two
 // faces, or two faces running along it the same way, is refused.
-void SplitMesh::link_faces(std::size_t vertex_count) {
-    std::vector<std::uint32_t> start(vertex_count + 1, 0);
-    for (const SFace& f : mesh_.face)
-        for (int k = 0; k < 3; ++k) ++start[index(f.cV(k)) + 1];
-    for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
-    std::vector<std::uint32_t> faces(start.back()), cursor(start.begin(), start.end() - 1);
-    for (std::uint32_t f = 0; f < mesh_.face.size(); ++f)
-        for (int k = 0; k < 3; ++k) faces[cursor[index(mesh_.face[f].cV(k))]++] = f;
+void SplitMesh::link_faces(std::size_t vertex_count, const std::vector<Triangle>& triangles) {
+    const VertexCorners at = corners_by_vertex(vertex_count, triangles); // faces in slot order
     for (std::uint32_t fi = 0; fi < mesh_.face.size(); ++fi) {
         SFace& f = mesh_.face[fi];
         for (int z = 0; z < 3; ++z) {
@@ -131,8 +125,8 @@ void SplitMesh::link_faces(std::size_t vertex_count) {
             f.FFp(z) = &f; // a border unless a face across is found
             f.FFi(z) = char(z);
             int found = 0;
-            for (std::uint32_t e = start[index(a)]; e < start[index(a) + 1]; ++e) {
-                SFace& g = mesh_.face[faces[e]];
+            for (std::uint32_t e = at.begin(index(a)); e < at.end(index(a)); ++e) {
+                SFace& g = mesh_.face[at.corner[e] / 3];
                 if (&g == &f) continue;
                 const int j = corner_of(&g, b);
                 if (j < 0) continue;

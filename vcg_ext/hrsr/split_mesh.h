@@ -95,7 +95,7 @@ public:
     const SMesh& vcg_mesh() const { return mesh_; }
 
 private:
-    void link_faces(std::size_t vertex_count);
+    void link_faces(std::size_t vertex_count, const std::vector<Triangle>& triangles);
     [[noreturn]] static void throw_not_manifold();
     void set_face_of(SFace* f);
     /// Number of edges at v and whether it lies on the boundary, by walking its faces.

@@ -8,14 +8,9 @@
 namespace hrsr {
 
 Fans compute_fans(std::size_t n, const std::vector<Triangle>& triangles) {
-    // Corners grouped by vertex (CSR), in increasing triangle order.
-    std::vector<std::uint32_t> offset(n + 1, 0);
-    for (const Triangle& t : triangles)
-        for (std::uint32_t v : t) ++offset[v + 1];
-    std::partial_sum(offset.begin(), offset.end(), offset.begin());
-    std::vector<std::uint32_t> corners(offset[n]), cursor(offset.begin(), offset.end() - 1);
-    for (std::uint32_t t = 0; t < triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) corners[cursor[triangles[t][k]]++] = 3 * t + std::uint32_t(k);
+    const VertexCorners at = corners_by_vertex(n, triangles);
+    const std::vector<std::uint32_t>& offset = at.start;
+    const std::vector<std::uint32_t>& corners = at.corner;
 
     Fans fans;
     fans.corner_fan.assign(3 * triangles.size(), 0);

@@ -2,11 +2,22 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace hrsr {
 
 using Triangle = std::array<std::uint32_t, 3>;
+
+/// The triangle corners at each vertex (CSR): corners of vertex v are
+/// corner[start[v]] … corner[start[v + 1] − 1], each 3 t + k, in increasing triangle order.
+struct VertexCorners {
+    std::vector<std::uint32_t> start, corner;
+    std::uint32_t begin(std::uint32_t v) const { return start[v]; }
+    std::uint32_t end(std::uint32_t v) const { return start[v + 1]; }
+};
+
+VertexCorners corners_by_vertex(std::size_t vertex_count, const std::vector<Triangle>& triangles);
 
 } // namespace hrsr

@@ -1,0 +1,137 @@
+// Triangles over fixed positions in a uniform grid: the intersecting pairs of a mesh (hrsr check)
+// and the faces near a place (the fold repair, D-26).
+#pragma once
+
+#include "mesh/triangle_intersection.h"
+#include "mesh/triangle_mesh.h"
+#include "parallel.h"
+#include "point_set.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace hrsr {
+
+using TrianglePair = std::pair<std::uint32_t, std::uint32_t>;
+
+struct Box {
+    Vec3 lo, hi;
+    void add(const Vec3& p) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], p[k]);
+            hi[k] = std::max(hi[k], p[k]);
+        }
+    }
+    bool overlaps(const Box& o) const {
+        for (int k = 0; k < 3; ++k)
+            if (hi[k] < o.lo[k] || o.hi[k] < lo[k]) return false;
+        return true;
+    }
+};
+
+inline Vec3 unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 n = (b - a) ^ (c - a);
+    const double length = n.Norm();
+    return length > 0 ? n / length : Vec3(0, 0, 0);
+}
+
+/// Triangles over fixed positions, with the tests the grid and the fold repair need. Corner ids
+/// decide which corners two triangles share (weld copies at one position first, as
+/// self_intersections.h does).
+class TriangleGeometry {
+public:
+    TriangleGeometry(const std::vector<Vec3>& positions, std::vector<Triangle> triangles)
+        : positions_(positions), triangles_(std::move(triangles)) {}
+
+    const Triangle& triangle(std::uint32_t f) const { return triangles_[f]; }
+    void set(std::uint32_t f, const Triangle& t) { triangles_[f] = t; }
+    std::size_t size() const { return triangles_.size(); }
+    const Vec3& position(std::uint32_t v) const { return positions_[v]; }
+
+    Box box(const Triangle& t) const {
+        Box b{positions_[t[0]], positions_[t[0]]};
+        b.add(positions_[t[1]]);
+        b.add(positions_[t[2]]);
+        return b;
+    }
+    Vec3 normal(const Triangle& t) const {
+        return unit_normal(positions_[t[0]], positions_[t[1]], positions_[t[2]]);
+    }
+    /// Not tested, as in self_intersections.h: a repeated corner or no area.
+    bool degenerate(const Triangle& t) const {
+        return t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || normal(t) == Vec3(0, 0, 0);
+    }
+    bool intersect(const Triangle& a, const Triangle& b) const {
+        return box(a).overlaps(box(b)) && intersect_exactly(a, b);
+    }
+    /// The same without the box test (the caller has done it).
+    bool intersect_exactly(const Triangle& a, const Triangle& b) const {
+        return mesh_triangles_intersect(corners(a), a, corners(b), b);
+    }
+
+private:
+    Corners corners(const Triangle& t) const {
+        return {positions_[t[0]], positions_[t[1]], positions_[t[2]]};
+    }
+    const std::vector<Vec3>& positions_;
+    std::vector<Triangle> triangles_;
+};
+
+// Faces filed by the cells of a uniform grid (about the mean face size) that their box covers,
+// as the faces stand when the grid is built. A face flipped later may reach other cells: the
+// repair adds its flipped faces to every query.
+class TriangleGrid {
+public:
+    /// Files every non-degenerate triangle of `g` (at least one triangle).
+    TriangleGrid(const TriangleGeometry& g, const Execution& exec);
+
+    /// Every intersecting pair (i < j), sorted; each pair is tested in the first cell both
+    /// boxes share only, cells in parallel blocks.
+    std::vector<TrianglePair> all_pairs(const TriangleGeometry& g, const Execution& exec) const;
+
+    /// Calls visit(cell index) for every cell `box` covers.
+    template <class Visit>
+    void for_each_cell(const Box& box, Visit&& visit) const {
+        const Cell lo = cell_of(box.lo), hi = cell_of(box.hi);
+        for (std::uint64_t x = lo[0]; x <= hi[0]; ++x)
+            for (std::uint64_t y = lo[1]; y <= hi[1]; ++y)
+                for (std::uint64_t z = lo[2]; z <= hi[2]; ++z) visit(index(x, y, z));
+    }
+
+    /// Faces filed in the cells `box` covers (possibly repeated).
+    void query(const Box& box, std::vector<std::uint32_t>& out) const {
+        for_each_cell(box, [&](std::uint64_t c) {
+            auto it = std::lower_bound(entries_.begin(), entries_.end(), c << 32);
+            for (; it != entries_.end() && cell(*it) == c; ++it) out.push_back(face(*it));
+        });
+    }
+
+private:
+    static constexpr double kMaxCellsPerAxis = 1600; // 1601³ < 2³²
+
+    static void sort_by_cell(std::vector<std::uint64_t>& entries);
+    using Cell = std::array<std::uint64_t, 3>;
+    static std::uint64_t cell(std::uint64_t entry) { return entry >> 32; }
+    static std::uint32_t face(std::uint64_t entry) { return std::uint32_t(entry); }
+    Cell cell_of(const Vec3& p) const {
+        Cell c;
+        for (int k = 0; k < 3; ++k)
+            c[k] = std::min(cells_[k] - 1,
+                            std::uint64_t(std::max(0.0, std::floor((p[k] - origin_[k]) / cell_))));
+        return c;
+    }
+    std::uint64_t index(std::uint64_t x, std::uint64_t y, std::uint64_t z) const {
+        return x + cells_[0] * (y + cells_[1] * z);
+    }
+    Vec3 origin_;
+    double cell_ = 1;
+    std::array<std::uint64_t, 3> cells_{1, 1, 1};
+    std::vector<std::uint64_t> entries_; ///< cell << 32 | face, sorted
+    std::vector<std::uint32_t> cell_start_;
+};
+
+} // namespace hrsr
