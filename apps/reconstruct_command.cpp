@@ -10,6 +10,7 @@
 #include "report_json.h"
 #include "terminal_progress.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
@@ -32,8 +33,9 @@ CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& a) {
         ->type_name("hrsr|rsr")
         ->capture_default_str();
     add_preprocess_options(*c, a.options.rsr.preprocess);
-    c->add_option("--n", a.options.rsr.max_handle_hops,
-                  "Handles only join points more than n graph hops apart")
+    c->add_option("--n", a.options.rsr.min_handle_loop,
+                  "Shortest loop around a handle that is kept, in point spacings of the input;\n"
+                  "shorter gaps are taken for slits and left open")
         ->capture_default_str();
     c->add_option("--handles", a.options.rsr.handles,
                   "Handles: -1 = as many as found, 0 = none (genus 0), g = at most g")
@@ -98,7 +100,7 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"k_normals", p.k_normals},
               {"k_smoothing", p.k_smoothing},
               {"min_component_size", p.min_component_size},
-              {"n", a.options.rsr.max_handle_hops},
+              {"n", a.options.rsr.min_handle_loop},
               {"handles", a.options.rsr.handles},
               {"orient_outward", a.options.rsr.orient_outward},
               {"threads", a.threads},
@@ -142,6 +144,8 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"face_split_edges", r.face_split_edges},
               {"handle_edges", r.handle_edges},
               {"handles", r.handles},
+              {"handle_hop_limits", r.handle_hop_limits},
+              {"small_holes_filled", r.small_holes_filled},
               {"ear_edges", r.ear_edges}}},
             {"fold_repair",
              {{"intersecting_pairs_found", r.fold_repair.pairs_before},
@@ -192,6 +196,15 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
         "%zu loops; non-manifold: %zu edges, %zu vertices\n",
         m.components.size(), genus.c_str(), largest.c_str(), r.handles, m.boundary_edges,
         m.boundary_loops, m.non_manifold_edges, m.non_manifold_vertices);
+    if (!r.handle_hop_limits.empty()) {
+        const auto [lo, hi] =
+            std::minmax_element(r.handle_hop_limits.begin(), r.handle_hop_limits.end());
+        const std::string hops =
+            *lo == *hi ? std::to_string(*lo) : std::to_string(*lo) + "-" + std::to_string(*hi);
+        std::printf("  handles: loops of at least n = %g input point spacings, i.e. endpoints "
+                    "more than %s graph hops apart on the cloud RsR saw\n",
+                    a.options.rsr.min_handle_loop, hops.c_str());
+    }
     if (a.options.rsr.fold_repair_rounds > 0)
         std::printf("  folds: %zu intersecting triangle pairs, %zu edge flips, %zu pairs left\n",
                     r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after);

@@ -3,6 +3,7 @@
 #include "layers.h"
 #include "parameters.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -87,6 +88,13 @@ void FilterHrsrPlugin::log_summary(const hrsr::ReconstructionReport& r, double s
                 m.components.size(), genus.isEmpty() ? "none" : genus.toStdString().c_str(),
                 largest ? largest->genus() : 0L, largest ? largest->boundary_loops : 0, r.handles,
                 seconds);
+    if (!r.handle_hop_limits.empty()) {
+        const auto [lo, hi] =
+            std::minmax_element(r.handle_hop_limits.begin(), r.handle_hop_limits.end());
+        log_message("HRsR: handles kept where the loop around them is at least n point spacings: "
+                    "%zu to %zu graph hops on the cloud RsR saw",
+                    *lo, *hi);
+    }
     log_message("HRsR: fold repair (D-26): %zu intersecting triangle pairs, %zu edge flips, %zu "
                 "pairs left",
                 r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after);

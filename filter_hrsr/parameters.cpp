@@ -52,9 +52,10 @@ std::vector<Doc> docs() {
          "smaller than " +
              num(p.min_component_size) + " points are dropped.",
          true},
-        {"n", "n (handle hops)", "graph hops", num(d.rsr.max_handle_hops),
-         "A handle only joins points more than n hops apart in the graph; lower it (e.g. 20) "
-         "for clouds of a few thousand points.",
+        {"n", "n (shortest handle)", "point spacings", num(d.rsr.min_handle_loop),
+         "Topology: a tunnel or handle is kept when the loop around it is at least n point "
+         "spacings long; shorter gaps are taken for slits or noise and left open. The same "
+         "value works at every density and collapse ratio.",
          true},
         {"distance", "Distance", "choice",
          kDistances[p.distance == DistanceMode::Euclidean ? 1 : 0],
@@ -106,7 +107,7 @@ void add_parameters(const MeshModel& m, RichParameterList& par) {
     par.addParam(param<RichInt>("collapse_k", d.collapse.collapse_k));
     par.addParam(param<RichFloat>("theta", float(p.theta_degrees)));
     par.addParam(param<RichFloat>("r", float(p.r)));
-    par.addParam(param<RichInt>("n", d.rsr.max_handle_hops));
+    par.addParam(param<RichInt>("n", int(d.rsr.min_handle_loop)));
     par.addParam(
         param<RichEnum>("distance", p.distance == DistanceMode::Euclidean ? 1 : 0, kDistances));
     par.addParam(
@@ -124,7 +125,7 @@ ReconstructionOptions read_options(const RichParameterList& par) {
         par.getEnum("distance") == 1 ? DistanceMode::Euclidean : DistanceMode::Tangent;
     o.rsr.preprocess.normals =
         par.getEnum("normals") == 1 ? NormalSource::Reestimate : NormalSource::Input;
-    o.rsr.max_handle_hops = par.getInt("n");
+    o.rsr.min_handle_loop = par.getInt("n");
     o.rsr.handles = par.getInt("handles");
     o.collapse.collapse_ratio = par.getDynamicFloat("collapse_ratio");
     o.collapse.collapse_k = par.getInt("collapse_k");

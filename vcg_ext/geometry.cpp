@@ -28,14 +28,24 @@ bool segments_cross(const Vec3& a, const Vec3& b, const Vec3& na, const Vec3& nb
            cross_in_plane((nc + nd) * 0.5, a, b, c, d);
 }
 
+namespace {
+// The angle at `apex` of the triangle (apex, p, q); `degenerate` when a side has no length.
+double corner_angle(const Vec3& apex, const Vec3& p, const Vec3& q, double degenerate) {
+    const Vec3 u = p - apex, v = q - apex;
+    const double nu = u.Norm(), nv = v.Norm();
+    if (nu == 0 || nv == 0) return degenerate;
+    return std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0));
+}
+} // namespace
+
 double largest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-    auto angle = [](const Vec3& apex, const Vec3& p, const Vec3& q) {
-        const Vec3 u = p - apex, v = q - apex;
-        const double nu = u.Norm(), nv = v.Norm();
-        if (nu == 0 || nv == 0) return M_PI;
-        return std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0));
-    };
-    return std::max({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+    return std::max(
+        {corner_angle(a, b, c, M_PI), corner_angle(b, c, a, M_PI), corner_angle(c, a, b, M_PI)});
+}
+
+double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+    return std::min(
+        {corner_angle(a, b, c, 0.0), corner_angle(b, c, a, 0.0), corner_angle(c, a, b, 0.0)});
 }
 
 } // namespace hrsr

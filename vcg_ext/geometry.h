@@ -63,4 +63,7 @@ bool segments_cross(const Vec3& a, const Vec3& b, const Vec3& na, const Vec3& nb
 /// Largest interior angle of triangle abc, in radians (π for degenerate triangles).
 double largest_angle(const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// The smallest interior angle of triangle (a, b, c) in radians; 0 when two corners coincide.
+double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c);
+
 } // namespace hrsr

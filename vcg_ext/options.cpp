@@ -32,8 +32,9 @@ void validate(const PreprocessOptions& o) {
 
 void validate(const RsrOptions& o) {
     validate(o.preprocess);
-    require(o.max_handle_hops >= 1, "n (max handle hops) must be at least 1 (got " +
-                                        std::to_string(o.max_handle_hops) + ")");
+    require(std::isfinite(o.min_handle_loop) && o.min_handle_loop >= 1 && o.min_handle_loop <= 1e6,
+            "n (shortest handle loop, in point spacings) must be between 1 and 1e6 (got " +
+                std::to_string(o.min_handle_loop) + ")");
     require(o.handles >= -1, "handles must be -1 (automatic), 0 (none) or a positive limit (got " +
                                  std::to_string(o.handles) + ")");
     require(o.fold_repair_rounds >= 0 && o.fold_repair_rounds <= 100,

@@ -48,8 +48,11 @@ void validate(const PreprocessOptions& options);
 /// are those of `preprocess`.
 struct RsrOptions {
     PreprocessOptions preprocess;
-    /// n: a handle edge only joins points more than n graph hops apart (§5.6).
-    int max_handle_hops = 50;
+    /// n: the shortest loop around a handle that is kept, in point spacings of the input (D-27).
+    /// A handle edge only joins points more than n graph hops apart on the full cloud, n·sqrt(p)
+    /// on HRsR's coarse cloud (p = its share of the points); §5.6 counted raw hops of whatever
+    /// cloud RsR saw. Shorter loops are taken for slits and noise and left open.
+    double min_handle_loop = 20;
     /// Handle groups: −1 = as many as found, 0 = none (genus 0), g = at most g (§5.9).
     int handles = -1;
     /// Flip closed output components whose signed volume is negative, so normals and face
@@ -155,6 +158,9 @@ inline constexpr double kGeometryNormalDot = 0.5;
 inline constexpr double kMaxTriangleAngleDegrees = 175.0;
 /// Handle groups with this many candidates or fewer are ignored (§5.6).
 inline constexpr std::size_t kMinHandleGroupSize = 5;
+/// D-27: the hop limit of a handle never falls below this on a coarse cloud: the two sides of a
+/// slit one or two triangles long are that close.
+inline constexpr std::size_t kMinHandleHops = 4;
 /// Re-expansion (§8.3, §8.4): crossing search extension, round cap, dihedral guard on 1 − cos.
 inline constexpr double kCrossingExtension = 1.11;
 inline constexpr int kCrossingRounds = 100;

@@ -4,6 +4,7 @@
 #include "hrsr/collapse.h"
 #include "hrsr/fold_repair.h"
 #include "mesh/fans.h"
+#include "mesh/small_holes_fill.h"
 #include "preprocess/components.h"
 #include "preprocess/pca_normals.h"
 #include "preprocess/preprocess.h"
@@ -177,6 +178,7 @@ void take_rsr_stats(const rsr::CloudMesh& m, ReconstructionReport& report) {
     report.face_split_edges = m.face_split_edges;
     report.handle_edges = m.handle_edges;
     report.handles = m.handles;
+    report.handle_hop_limits = m.handle_hop_limits;
     report.ear_edges = m.ear_edges;
     rsr::add_timings(report.timings, m.timings);
 }
@@ -188,6 +190,7 @@ PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collaps
     PreparedCloud coarse;
     coarse.positions = collapsed.positions;
     coarse.normals = collapsed.normals;
+    coarse.weights = collapsed.weights;
     coarse.input_index = collapsed.survivors; // node ids = indices into `cloud`
     coarse.normalisation = cloud.normalisation;
     coarse.smoothed =
@@ -222,6 +225,7 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     take_rsr_stats(rsr_mesh, report);
     begin_phase(exec, "assembly");
     std::optional<Timer> assembly(std::in_place, report.timings, "assembly");
+    report.small_holes_filled = fill_small_holes(rsr_mesh.triangles, cloud.positions);
     CompactMesh m = compact(cloud.size(), std::move(rsr_mesh.triangles));
     for (std::uint32_t p : m.unused) report.not_in_triangle.push_back(cloud.input_index[p]);
     report.vertex_copies = m.copies;
@@ -310,6 +314,13 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     std::sort(report.not_in_triangle.begin(), report.not_in_triangle.end());
     std::sort(report.dropped_small_coarse_component.begin(),
               report.dropped_small_coarse_component.end());
+    {
+        std::vector<Vec3> vertex_positions;
+        vertex_positions.reserve(fine.vertex_node.size());
+        for (std::uint32_t node : fine.vertex_node)
+            vertex_positions.push_back(cloud.positions[node]);
+        report.small_holes_filled = fill_small_holes(fine.triangles, vertex_positions);
+    }
     // The re-expanded mesh is manifold by construction; the fan split is a safety net.
     CompactMesh out = compact(fine.vertex_node.size(), std::move(fine.triangles));
     report.vertex_copies += out.copies;

@@ -37,8 +37,12 @@ struct ReconstructionReport {
 
     std::size_t candidates = 0, tree_edges = 0, face_split_edges = 0, handle_edges = 0,
                 ear_edges = 0;
-    std::size_t handles = 0;     ///< handles inserted (merges of two faces), all components
-    FoldRepairStats fold_repair; ///< D-26, on the output mesh
+    std::size_t handles = 0; ///< handles inserted (merges of two faces), all components
+    /// Graph hops a handle's endpoints had to be apart, per RsR component in component order:
+    /// n input spacings on the cloud RsR saw (D-27).
+    std::vector<std::size_t> handle_hop_limits;
+    FoldRepairStats fold_repair;        ///< D-26, on the output mesh
+    std::size_t small_holes_filled = 0; ///< D-28: boundary loops of at most 5 edges closed
     MeshStats mesh;
     std::vector<std::pair<std::string, double>>
         timings; ///< (phase, seconds), summed over components

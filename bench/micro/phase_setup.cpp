@@ -46,8 +46,10 @@ void RsrState::run(RsrPhase phase) {
         rsr::split_faces(*rotation, *faces, *geometry, candidates, triangles, nullptr, nullptr);
         break;
     case RsrPhase::Handles:
-        rsr::insert_handles(*rotation, *faces, *geometry, index, options, triangles, roots,
-                            nullptr);
+        rsr::insert_handles(*rotation, *faces, *geometry, index, options,
+                            rsr::handle_hop_limit(options.min_handle_loop, cloud.smoothed.size(),
+                                                  cloud.smoothed.size()),
+                            triangles, roots, nullptr);
         break;
     case RsrPhase::Ears:
         rsr::triangulate_ears(*rotation, *faces, *geometry, cloud, graph.max_length,

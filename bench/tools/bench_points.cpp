@@ -2,11 +2,18 @@
 //   bench_points vertices MESH.ply OUT.ply           the mesh's vertices (normals kept if any)
 //   bench_points sample MESH.ply N OUT.ply [SEED]    N points uniform by area (vcglib's Montecarlo
 //                                                    sampler), each with its triangle's unit normal
+//   bench_points surface SHAPE N DENSITY NOISE NORMALS OUT.ply
+//                                                    N points of an analytic surface (tests'
+//                                                    samplers): SHAPE sphere|torus|double_torus|
+//                                                    triple_torus, DENSITY uniform|graded, NOISE
+//                                                    σ in % of the bounding-box diagonal, NORMALS
+//                                                    normals|none (exact normals or a bare cloud)
 // Exit codes: 0 success, 1 bad input or output, 2 usage.
 #include "errors.h"
 #include "io/mesh_reader.h"
 #include "io/ply_writer.h"
 #include "mesh/vcg_mesh.h"
+#include "samplers.h"
 
 #include <vcg/complex/algorithms/point_sampling.h>
 
@@ -34,7 +41,9 @@ public:
 
 int usage() {
     std::fprintf(stderr, "usage: bench_points vertices MESH.ply OUT.ply | "
-                         "bench_points sample MESH.ply N OUT.ply [SEED]\n");
+                         "bench_points sample MESH.ply N OUT.ply [SEED] | "
+                         "bench_points surface SHAPE N uniform|graded NOISE_PERCENT "
+                         "normals|none OUT.ply\n");
     return 2;
 }
 
@@ -56,6 +65,32 @@ void write_samples(const std::string& in, std::size_t n, const std::string& out,
                         hrsr::CoordinatePrecision::Float);
 }
 
+hrsr::PointSet surface_points(const std::string& shape, std::size_t n,
+                              hrsr::testing::Density density) {
+    namespace t = hrsr::testing;
+    if (shape == "sphere") return t::sample_sphere(n, 1.0, hrsr::Vec3(0, 0, 0), density);
+    if (shape == "torus") return t::sample_torus(n, 1.0, 0.35, density);
+    if (shape == "double_torus") return t::sample_multi_torus(n, 2, density);
+    if (shape == "triple_torus") return t::sample_multi_torus(n, 3, density);
+    throw hrsr::InvalidInput("unknown shape '" + shape + "'");
+}
+
+void write_surface(const std::vector<std::string>& a) {
+    char* end = nullptr;
+    const unsigned long long n = std::strtoull(a[2].c_str(), &end, 10);
+    if (*end != '\0' || n == 0 || n > (1ull << 28)) throw hrsr::InvalidInput("bad N " + a[2]);
+    if (a[3] != "uniform" && a[3] != "graded") throw hrsr::InvalidInput("bad density " + a[3]);
+    const double noise_percent = std::stod(a[4]);
+    if (!(noise_percent >= 0)) throw hrsr::InvalidInput("bad noise " + a[4]);
+    if (a[5] != "normals" && a[5] != "none") throw hrsr::InvalidInput("bad normals " + a[5]);
+    hrsr::PointSet s = surface_points(a[1], std::size_t(n),
+                                      a[3] == "graded" ? hrsr::testing::Density::Graded
+                                                       : hrsr::testing::Density::Uniform);
+    hrsr::testing::add_noise(s, noise_percent / 100.0 * hrsr::testing::bounding_box_diagonal(s));
+    if (a[5] == "none") s.normals.clear();
+    hrsr::io::write_ply(a[6], s.positions, s.normals, {}, hrsr::CoordinatePrecision::Double);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -69,6 +104,8 @@ int main(int argc, char** argv) {
             if (*end != '\0' || n == 0 || n > (1ull << 30)) return usage();
             const unsigned seed = a.size() == 5 ? unsigned(std::stoul(a[4])) : 1u;
             write_samples(a[1], std::size_t(n), a[3], seed);
+        } else if (a.size() == 7 && a[0] == "surface") {
+            write_surface(a);
         } else {
             return usage();
         }

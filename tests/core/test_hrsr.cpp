@@ -50,10 +50,10 @@ private:
     bool have_previous_ = false;
 };
 
-ReconstructionOptions hrsr_options(double p, int n = 50) {
+/// The defaults, at collapse ratio p.
+ReconstructionOptions hrsr_options(double p) {
     ReconstructionOptions o;
     o.collapse.collapse_ratio = p;
-    o.rsr.max_handle_hops = n;
     return o;
 }
 
@@ -61,7 +61,6 @@ struct Case {
     const char* name;
     PointSet (*cloud)();
     long genus;
-    int n; ///< handle hops for the coarse cloud (see test_rsr.cpp for how n relates to density)
 };
 
 PointSet sphere() {
@@ -73,6 +72,16 @@ PointSet torus() {
 PointSet double_torus() {
     return testing::sample_double_torus(40000);
 }
+PointSet triple_torus() {
+    return testing::sample_multi_torus(30000, 3);
+}
+
+std::string surface_case_name(const ::testing::TestParamInfo<std::tuple<Case, double>>& test) {
+    const double p = std::get<1>(test.param);
+    return std::string(std::get<0>(test.param).name) + (p > 0.4   ? "_half"
+                                                        : p > 0.2 ? "_quarter"
+                                                                  : "_eighth");
+}
 
 class HrsrSurface : public ::testing::TestWithParam<std::tuple<Case, double>> {};
 
@@ -81,8 +90,7 @@ TEST_P(HrsrSurface, SameTopologyAsTheSurfaceEverySplitChecked) {
     const PointSet s = c.cloud();
     ReconstructionReport report;
     SplitChecker checker(97);
-    const Reconstruction r =
-        reconstruct_hrsr(s, hrsr_options(p, c.n), {}, report, nullptr, &checker);
+    const Reconstruction r = reconstruct_hrsr(s, hrsr_options(p), {}, report, nullptr, &checker);
     const MeshStats& m = report.mesh;
     EXPECT_EQ(m.non_manifold_edges, 0u);
     EXPECT_EQ(m.non_manifold_vertices, 0u);
@@ -104,18 +112,23 @@ TEST_P(HrsrSurface, SameTopologyAsTheSurfaceEverySplitChecked) {
 
 INSTANTIATE_TEST_SUITE_P(
     Analytic, HrsrSurface,
-    ::testing::Combine(::testing::Values(Case{"sphere", sphere, 0, 50}, Case{"torus", torus, 1, 20},
-                                         Case{"double_torus", double_torus, 2, 20}),
-                       ::testing::Values(0.5, 0.125)),
-    [](const auto& test) {
-        return std::string(std::get<0>(test.param).name) +
-               (std::get<1>(test.param) > 0.2 ? "_half" : "_eighth");
-    });
+    ::testing::Combine(::testing::Values(Case{"sphere", sphere, 0}, Case{"torus", torus, 1},
+                                         Case{"double_torus", double_torus, 2}),
+                       ::testing::Values(0.5, 0.25, 0.125)),
+    surface_case_name);
+
+// The triple torus at p = 0.5 keeps its genus and closes, but one of its 15,000 splits leaves a
+// tangent-plane crossing unresolved (docs/STATUS.md, gap 7): tested at 0.25 and 0.125 here.
+INSTANTIATE_TEST_SUITE_P(AnalyticGenus3, HrsrSurface,
+                         ::testing::Combine(::testing::Values(Case{"triple_torus", triple_torus,
+                                                                   3}),
+                                            ::testing::Values(0.25, 0.125)),
+                         surface_case_name);
 
 TEST(Hrsr, WithoutLMinEveryPointIsAVertexAtItsInputPosition) {
     const PointSet s = testing::sample_torus(15000, 1.0, 0.35, testing::Density::Graded);
     ReconstructionReport report;
-    const Reconstruction r = reconstruct_hrsr(s, hrsr_options(0.25, 20), {}, report);
+    const Reconstruction r = reconstruct_hrsr(s, hrsr_options(0.25), {}, report);
     std::vector<int> seen(s.size(), 0);
     for (std::uint32_t i : r.vertex_input_index) ++seen[i];
     for (std::size_t i = 0; i < s.size(); ++i)
@@ -153,7 +166,7 @@ TEST(Hrsr, SameMeshForOneAndTwoThreads) {
         Execution exec;
         exec.threads = threads;
         ReconstructionReport report;
-        return reconstruct_hrsr(s, hrsr_options(0.25, 20), exec, report);
+        return reconstruct_hrsr(s, hrsr_options(0.25), exec, report);
     };
     const Reconstruction a = run(1), b = run(2);
     EXPECT_EQ(a.vertex_input_index, b.vertex_input_index);

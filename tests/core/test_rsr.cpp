@@ -35,9 +35,9 @@ struct Result {
     MeshStats stats; ///< measured here on the returned mesh, not taken from the report
 };
 
-RsrOptions rsr_options(int max_handle_hops, int handles = -1) {
+/// The defaults, with a genus limit when asked (§5.9).
+RsrOptions rsr_options(int handles = -1) {
     RsrOptions o;
-    o.max_handle_hops = max_handle_hops;
     o.handles = handles;
     return o;
 }
@@ -106,28 +106,19 @@ std::size_t triangles_against_normals(const PointSet& input, const Result& r) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Analytic surfaces with exact normals.
-//
-// Choice of n (max_handle_hops): a handle edge only joins two points more than n graph hops
-// apart, so n must stay below the hop length of the shortest loop around a handle of the
-// surface, or the handle is refused. A graph hop is about one sample spacing h ≈ sqrt(area / N);
-// where a graded sample is sparsest (a tenth of the density), h is sqrt(10) times larger. The
-// shortest such loop is around a tube: 2π · 0.35 ≈ 2.2 for the torus (area ≈ 13.8), 2π · 0.4 ≈ 2.5
-// for the double torus (area ≈ 28). At 10k–20k points, uniform, that is ≈ 60–70 hops around the
-// tube, and ≈ 20–40 at the sparse end of the graded samples: n = 20 is below both. The 50k
-// graded torus has ≈ 55 hops around the tube at its sparse end: n = 30. The 100k uniform torus
-// has ≈ 190 hops around the tube, dense enough for the default n = 50 (meant for dense scans).
-// The sphere has no handle to find: a small n (20) makes spurious handles more likely, so it
-// is the stricter test there.
+// Analytic surfaces with exact normals, reconstructed at the defaults. D-27: n counts point
+// spacings of the input, and every loop around a tube here is longer than the default 20: at 5k
+// points the torus tube (2π · 0.35) is about 40 spacings around, and about 13 where a graded
+// sample is sparsest (a tenth of the density), which is why the graded cases are 20k and more.
+// The sphere has no handle to find: spurious handles would show as genus.
 
-enum class Shape { Sphere, Torus, DoubleTorus };
+enum class Shape { Sphere, Torus, DoubleTorus, TripleTorus };
 
 struct SurfaceCase {
     const char* name;
     Shape shape;
     std::size_t points; ///< asked of the sampler (graded samples keep about 55 % of them)
     Density density;
-    int hops; ///< n, see above
     long genus;
 };
 
@@ -139,12 +130,14 @@ PointSet sample(const SurfaceCase& c) {
         return testing::sample_torus(c.points, 1.0, 0.35, c.density);
     case Shape::DoubleTorus:
         return testing::sample_double_torus(c.points, c.density);
+    case Shape::TripleTorus:
+        return testing::sample_multi_torus(c.points, 3, c.density);
     }
     return {};
 }
 
 void PrintTo(const SurfaceCase& c, std::ostream* os) {
-    *os << c.name << " (n = " << c.hops << ")";
+    *os << c.name;
 }
 
 std::string case_name(const ::testing::TestParamInfo<SurfaceCase>& info) {
@@ -157,7 +150,7 @@ class RsrSurface : public ::testing::TestWithParam<SurfaceCase> {};
 TEST_P(RsrSurface, ClosedManifoldOfExactGenus) {
     const SurfaceCase& c = GetParam();
     const PointSet cloud = sample(c);
-    const Result r = reconstruct(cloud, rsr_options(c.hops));
+    const Result r = reconstruct(cloud, rsr_options());
     expect_closed_surface(r, c.genus);
     EXPECT_EQ(r.stats.vertices, cloud.size()); // exact normals: every point is a vertex
     EXPECT_EQ(r.report.vertex_copies, 0u);
@@ -174,14 +167,17 @@ TEST_P(RsrSurface, ClosedManifoldOfExactGenus) {
 INSTANTIATE_TEST_SUITE_P(
     Analytic, RsrSurface,
     ::testing::Values(
-        SurfaceCase{"Sphere_Uniform_10k", Shape::Sphere, 10000, Density::Uniform, 20, 0},
-        SurfaceCase{"Sphere_Graded_20k", Shape::Sphere, 20000, Density::Graded, 20, 0},
-        SurfaceCase{"Torus_Uniform_10k", Shape::Torus, 10000, Density::Uniform, 20, 1},
-        SurfaceCase{"Torus_Graded_20k", Shape::Torus, 20000, Density::Graded, 20, 1},
-        SurfaceCase{"Torus_Graded_50k", Shape::Torus, 50000, Density::Graded, 30, 1},
-        SurfaceCase{"Torus_Uniform_100k", Shape::Torus, 100000, Density::Uniform, 50, 1},
-        SurfaceCase{"DoubleTorus_Uniform_20k", Shape::DoubleTorus, 20000, Density::Uniform, 20, 2},
-        SurfaceCase{"DoubleTorus_Graded_40k", Shape::DoubleTorus, 40000, Density::Graded, 20, 2}),
+        SurfaceCase{"Sphere_Uniform_10k", Shape::Sphere, 10000, Density::Uniform, 0},
+        SurfaceCase{"Sphere_Graded_20k", Shape::Sphere, 20000, Density::Graded, 0},
+        SurfaceCase{"Torus_Uniform_5k", Shape::Torus, 5000, Density::Uniform, 1},
+        SurfaceCase{"Torus_Uniform_10k", Shape::Torus, 10000, Density::Uniform, 1},
+        SurfaceCase{"Torus_Graded_20k", Shape::Torus, 20000, Density::Graded, 1},
+        SurfaceCase{"Torus_Graded_50k", Shape::Torus, 50000, Density::Graded, 1},
+        SurfaceCase{"Torus_Uniform_100k", Shape::Torus, 100000, Density::Uniform, 1},
+        SurfaceCase{"DoubleTorus_Uniform_20k", Shape::DoubleTorus, 20000, Density::Uniform, 2},
+        SurfaceCase{"DoubleTorus_Graded_40k", Shape::DoubleTorus, 40000, Density::Graded, 2},
+        SurfaceCase{"TripleTorus_Uniform_10k", Shape::TripleTorus, 10000, Density::Uniform, 3},
+        SurfaceCase{"TripleTorus_Graded_30k", Shape::TripleTorus, 30000, Density::Graded, 3}),
     case_name);
 
 class RsrSurfaceWithoutHandles : public ::testing::TestWithParam<SurfaceCase> {};
@@ -190,7 +186,7 @@ class RsrSurfaceWithoutHandles : public ::testing::TestWithParam<SurfaceCase> {}
 TEST_P(RsrSurfaceWithoutHandles, GenusZeroWithBoundary) {
     const SurfaceCase& c = GetParam();
     const PointSet cloud = sample(c);
-    const Result r = reconstruct(cloud, rsr_options(c.hops, 0));
+    const Result r = reconstruct(cloud, rsr_options(0));
     expect_manifold(r);
     const MeshStats& m = r.stats;
     EXPECT_EQ(r.report.handles, 0u);
@@ -205,10 +201,10 @@ TEST_P(RsrSurfaceWithoutHandles, GenusZeroWithBoundary) {
 INSTANTIATE_TEST_SUITE_P(
     Analytic, RsrSurfaceWithoutHandles,
     ::testing::Values(
-        SurfaceCase{"Torus_Uniform_10k", Shape::Torus, 10000, Density::Uniform, 20, 1},
-        SurfaceCase{"Torus_Graded_20k", Shape::Torus, 20000, Density::Graded, 20, 1},
-        SurfaceCase{"DoubleTorus_Uniform_20k", Shape::DoubleTorus, 20000, Density::Uniform, 20, 2},
-        SurfaceCase{"DoubleTorus_Graded_40k", Shape::DoubleTorus, 40000, Density::Graded, 20, 2}),
+        SurfaceCase{"Torus_Uniform_10k", Shape::Torus, 10000, Density::Uniform, 1},
+        SurfaceCase{"Torus_Graded_20k", Shape::Torus, 20000, Density::Graded, 1},
+        SurfaceCase{"DoubleTorus_Uniform_20k", Shape::DoubleTorus, 20000, Density::Uniform, 2},
+        SurfaceCase{"DoubleTorus_Graded_40k", Shape::DoubleTorus, 40000, Density::Graded, 2}),
     case_name);
 
 // ---------------------------------------------------------------------------------------------
@@ -254,8 +250,7 @@ class RsrInvariants : public ::testing::TestWithParam<InvariantCase> {};
 TEST_P(RsrInvariants, EulerCharacteristicAndHandleAccounting) {
     const InvariantCase& c = GetParam();
     PhaseChecker checker(1000);
-    const Result r =
-        reconstruct(sample(c.surface), rsr_options(c.surface.hops, c.handles), 0, &checker);
+    const Result r = reconstruct(sample(c.surface), rsr_options(c.handles), 0, &checker);
     expect_manifold(r);
     const MeshStats& m = r.stats;
     ASSERT_EQ(m.components.size(), 1u);
@@ -280,7 +275,7 @@ TEST_P(RsrInvariants, EulerCharacteristicAndHandleAccounting) {
 TEST_P(RsrInvariants, NoSelfIntersections) {
     const InvariantCase& c = GetParam();
     const PointSet cloud = sample(c.surface);
-    const Result r = reconstruct(cloud, rsr_options(c.surface.hops, c.handles));
+    const Result r = reconstruct(cloud, rsr_options(c.handles));
     testing::VcgMesh m;
     testing::build_vcg_mesh(cloud, r.mesh, m);
     EXPECT_EQ(testing::self_intersecting_faces(m).size(), 0u);
@@ -300,15 +295,15 @@ TEST_P(RsrInvariants, NoSelfIntersections) {
 INSTANTIATE_TEST_SUITE_P(
     Analytic, RsrInvariants,
     ::testing::Values(
-        InvariantCase{{"Sphere_Uniform_10k", Shape::Sphere, 10000, Density::Uniform, 20, 0}, -1},
-        InvariantCase{{"Torus_Graded_10k", Shape::Torus, 10000, Density::Graded, 20, 1}, -1},
-        InvariantCase{{"Torus_Uniform_10k", Shape::Torus, 10000, Density::Uniform, 20, 1}, 0},
-        InvariantCase{
-            {"DoubleTorus_Uniform_15k", Shape::DoubleTorus, 15000, Density::Uniform, 20, 2}, -1},
-        InvariantCase{{"DoubleTorus_Graded_20k", Shape::DoubleTorus, 20000, Density::Graded, 20, 2},
+        InvariantCase{{"Sphere_Uniform_10k", Shape::Sphere, 10000, Density::Uniform, 0}, -1},
+        InvariantCase{{"Torus_Graded_10k", Shape::Torus, 10000, Density::Graded, 1}, -1},
+        InvariantCase{{"Torus_Uniform_10k", Shape::Torus, 10000, Density::Uniform, 1}, 0},
+        InvariantCase{{"DoubleTorus_Uniform_15k", Shape::DoubleTorus, 15000, Density::Uniform, 2},
                       -1},
-        InvariantCase{
-            {"DoubleTorus_Uniform_10k", Shape::DoubleTorus, 10000, Density::Uniform, 20, 2}, 0}),
+        InvariantCase{{"DoubleTorus_Graded_20k", Shape::DoubleTorus, 20000, Density::Graded, 2},
+                      -1},
+        InvariantCase{{"DoubleTorus_Uniform_10k", Shape::DoubleTorus, 10000, Density::Uniform, 2},
+                      0}),
     invariant_case_name);
 
 // The component stage alone on a small sphere, every insertion checked in full every 50.
@@ -335,7 +330,7 @@ TEST(RsrComponent, SphereIsAClosedGenusZeroManifold) {
 
 // ---------------------------------------------------------------------------------------------
 // Known-topology models of ../shared/data/topology, used as point clouds: vertices only, no
-// normals (the reader ignores faces). 4k–12k points: n = 20 (as in GEL's demo).
+// normals (the reader ignores faces), at the defaults.
 
 std::string shared(const std::string& relative) {
     const std::filesystem::path p = std::filesystem::path(HRSR_SHARED_DATA) / relative;
@@ -356,13 +351,13 @@ std::string model_name(const ::testing::TestParamInfo<ModelCase>& info) {
     return file.substr(0, file.rfind('.'));
 }
 
-/// Reads a model as a point cloud and reconstructs it with n = 20; false if it is absent.
+/// Reads a model as a point cloud and reconstructs it at the defaults; false if it is absent.
 bool reconstruct_model(const std::string& file, PointSet& cloud, Result& r) {
     const std::string path = shared("topology/" + file);
     if (path.empty()) return false;
     cloud = io::read_point_set(path);
     EXPECT_FALSE(cloud.has_normals()) << file;
-    r = reconstruct(cloud, rsr_options(20));
+    r = reconstruct(cloud, rsr_options());
     return true;
 }
 
@@ -451,7 +446,7 @@ TEST(RsrDeterminism, SameMeshForOneAndTwoThreads) {
                                       Vec3(10, 0, 0)));
     testing::append(cloud, testing::sample_sphere(150, 0.05, Vec3(0, 10, 0), Density::Uniform, 8));
     testing::append(cloud, testing::sample_sphere(20, 0.01, Vec3(0, 0, 10), Density::Uniform, 9));
-    const RsrOptions options = rsr_options(20);
+    const RsrOptions options = rsr_options();
     const Result one = reconstruct(cloud, options, 1);
     const Result two = reconstruct(cloud, options, 2);
     ASSERT_EQ(one.report.preprocess.components_kept, 3u);
@@ -543,7 +538,7 @@ TEST(RsrAccounting, EveryInputPointIsReferencedOrDroppedForOneReason) {
     cloud.normals.emplace_back(0, 0, 1);
     for (std::size_t i : {0, 17, 17, 4999}) append_copy(cloud, i); // merged into sphere points
     for (std::size_t i : {5000, 5011}) append_copy(cloud, i);      // merged into dropped points
-    const Result r = reconstruct(cloud, rsr_options(20));
+    const Result r = reconstruct(cloud, rsr_options());
     const PreprocessReport& pre = r.report.preprocess;
     EXPECT_EQ(pre.count(PointFate::NonFinite), 4u);
     EXPECT_EQ(pre.count(PointFate::SmallComponent), 14u);
@@ -567,7 +562,7 @@ TEST(RsrAccounting, DuplicatesOfPointsInNoTriangleAreDropped) {
     const std::size_t n = cloud.size();
     for (std::uint32_t i : first.report.not_in_triangle) append_copy(cloud, i);
     append_copy(cloud, first.mesh.vertex_input_index.front());
-    const Result r = reconstruct(cloud, rsr_options(20));
+    const Result r = reconstruct(cloud, rsr_options());
     // Duplicates are merged before anything else: the same mesh over the same points, and each
     // copy of a point in no triangle is listed under the same reason as that point.
     ASSERT_EQ(r.mesh.vertex_input_index, first.mesh.vertex_input_index);

@@ -63,7 +63,7 @@ inline std::string hrsr_filter(const std::map<std::string, std::string>& values 
       << "  <Param type=\"RichFloat\" name=\"theta\" value="
       << value("theta", d.rsr.preprocess.theta_degrees) << "/>\n"
       << "  <Param type=\"RichFloat\" name=\"r\" value=" << value("r", d.rsr.preprocess.r) << "/>\n"
-      << "  <Param type=\"RichInt\" name=\"n\" value=" << value("n", d.rsr.max_handle_hops)
+      << "  <Param type=\"RichInt\" name=\"n\" value=" << value("n", int(d.rsr.min_handle_loop))
       << "/>\n"
       << "  <Param type=\"RichEnum\" name=\"distance\" value=" << value("distance", 0) << two
       << "/>\n"

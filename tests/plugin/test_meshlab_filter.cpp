@@ -111,7 +111,7 @@ TEST_F(MeshLabFilter, DumpListsEveryParameterWithUnitAndDefault) {
         {"Collapse neighbours", "points", text(d.collapse.collapse_k)},
         {"θ (normal angle)", "degrees", text(d.rsr.preprocess.theta_degrees)},
         {"r (outlier cut)", "multiple of the mean neighbour distance", text(d.rsr.preprocess.r)},
-        {"n (handle hops)", "graph hops", text(d.rsr.max_handle_hops)},
+        {"n (shortest handle)", "point spacings", text(int(d.rsr.min_handle_loop))},
         {"Distance", "choice", "Tangent"},
         {"Normals", "choice", "Use the layer's normals"},
         {"Select dropped points", "on/off", "off"}};

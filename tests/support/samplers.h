@@ -73,11 +73,15 @@ inline PointSet sample_torus(std::size_t n, double R = 1.0, double r = 0.35,
 /// projected on f = 0 by Newton steps along ∇f, then thinned by a minimum distance
 /// (Poisson-disk-like, through a grid) so that the density is even, the distance chosen so that n
 /// points (±2 %) remain before the `density` grading. Normals: ∇f normalised (outward).
-inline PointSet sample_double_torus(std::size_t n, Density density = Density::Uniform,
-                                    unsigned seed = 4, double R = 1.0, double r = 0.4,
-                                    double offset = 1.2, double blend = 0.15) {
+/// `holes` tori in a row along x (centres 2 · offset apart) make a surface of genus `holes`; the
+/// double torus is holes = 2 (the same points for the same seed).
+inline PointSet sample_multi_torus(std::size_t n, int holes, Density density = Density::Uniform,
+                                   unsigned seed = 4, double R = 1.0, double r = 0.4,
+                                   double offset = 1.2, double blend = 0.15) {
     struct Field {
+        int holes;
         double R, r, offset, blend;
+        double centre(int i) const { return (2.0 * i - (holes - 1)) * offset; }
         // Signed distance of the torus centred at (cx, 0, 0) and its gradient.
         double torus(const Vec3& p, double cx, Vec3& grad) const {
             const double x = p[0] - cx, y = p[1], z = p[2];
@@ -86,15 +90,20 @@ inline PointSet sample_double_torus(std::size_t n, Density density = Density::Un
             grad = Vec3(a / len * x / rho, a / len * y / rho, z / len);
             return len - r;
         }
+        // Smooth minimum of the tori from left to right (for two: smin(left, right)).
         double value(const Vec3& p, Vec3& grad) const {
-            Vec3 ga, gb;
-            const double a = torus(p, -offset, ga), b = torus(p, offset, gb);
-            const double h = std::clamp(0.5 + 0.5 * (b - a) / blend, 0.0, 1.0);
-            grad = ga * h + gb * (1.0 - h); // exact gradient of the polynomial smooth minimum
-            return b + (a - b) * h - blend * h * (1.0 - h);
+            double a = torus(p, centre(0), grad);
+            for (int i = 1; i < holes; ++i) {
+                Vec3 ga = grad, gb;
+                const double b = torus(p, centre(i), gb);
+                const double h = std::clamp(0.5 + 0.5 * (b - a) / blend, 0.0, 1.0);
+                grad = ga * h + gb * (1.0 - h); // exact gradient of the polynomial smooth minimum
+                a = b + (a - b) * h - blend * h * (1.0 - h);
+            }
+            return a;
         }
     };
-    const Field field{R, r, offset, blend};
+    const Field field{holes, R, r, offset, blend};
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> angle(0, 2 * M_PI), unit(0, 1);
 
@@ -103,7 +112,7 @@ inline PointSet sample_double_torus(std::size_t n, Density density = Density::Un
     while (candidates.size() < 6 * n) {
         const double u = angle(rng), v = angle(rng);
         if (unit(rng) * (R + r) > R + r * std::cos(v)) continue;
-        const double cx = unit(rng) < 0.5 ? -offset : offset;
+        const double cx = field.centre(std::min(int(unit(rng) * holes), holes - 1));
         const Vec3 radial(std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v));
         Vec3 p = Vec3(cx + std::cos(u) * R, std::sin(u) * R, 0.0) + radial * r, grad;
         double f = 0;
@@ -156,11 +165,37 @@ inline PointSet sample_double_torus(std::size_t n, Density density = Density::Un
     PointSet s;
     s.precision = CoordinatePrecision::Double;
     for (std::size_t c : kept) {
-        if (!detail::accept(candidates[c], offset + R + r, density, rng)) continue;
+        if (!detail::accept(candidates[c], field.centre(holes - 1) + R + r, density, rng)) continue;
         s.positions.push_back(candidates[c]);
         s.normals.push_back(normals[c]);
     }
     return s;
+}
+
+/// The genus-2 surface above (holes = 2); see sample_multi_torus.
+inline PointSet sample_double_torus(std::size_t n, Density density = Density::Uniform,
+                                    unsigned seed = 4) {
+    return sample_multi_torus(n, 2, density, seed);
+}
+
+/// Moves every point by isotropic Gaussian noise of standard deviation `sigma` (model units);
+/// normals stay the exact ones of the clean surface.
+inline void add_noise(PointSet& s, double sigma, unsigned seed = 5) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> gauss(0.0, sigma);
+    for (Vec3& p : s.positions) p += Vec3(gauss(rng), gauss(rng), gauss(rng));
+}
+
+/// The bounding-box diagonal of the points.
+inline double bounding_box_diagonal(const PointSet& s) {
+    if (s.positions.empty()) return 0;
+    Vec3 lo = s.positions[0], hi = s.positions[0];
+    for (const Vec3& p : s.positions)
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], p[k]);
+            hi[k] = std::max(hi[k], p[k]);
+        }
+    return (hi - lo).Norm();
 }
 
 /// A jittered square grid in the z = 0 plane (an open disc-like patch with boundary).

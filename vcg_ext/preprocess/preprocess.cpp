@@ -195,6 +195,7 @@ PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& 
         kept.positions.push_back(cloud.positions[i]);
         kept.smoothed.push_back(cloud.smoothed[i]);
         kept.normals.push_back(cloud.normals[i]);
+        if (!cloud.weights.empty()) kept.weights.push_back(cloud.weights[i]);
         kept.component.push_back(split.label[i]);
     }
     return kept;

@@ -22,6 +22,9 @@ struct PreparedCloud {
     std::vector<Vec3> smoothed; ///< normalised smoothed positions (= positions in Euclidean
                                 ///< mode); empty when prepared for the collapse
     std::vector<Vec3> normals;  ///< unit; consistently oriented per connected piece
+    /// Input points each point stands for (HRsR's coarse cloud: its collapse weight); empty =
+    /// one each. RsR measures handle loops in spacings of the input through it (D-27).
+    std::vector<std::uint32_t> weights;
     Normalisation normalisation;
     /// Set by preprocess(): component of each point (0 … component_count − 1, §4.6).
     std::vector<std::uint32_t> component;

@@ -13,6 +13,8 @@ struct ComponentCloud {
     std::vector<Vec3> positions; ///< normalised input positions (used for output only)
     std::vector<Vec3> smoothed;  ///< positions for neighbourhoods, angles and geometry tests
     std::vector<Vec3> normals;   ///< unit, oriented
+    /// Input points the component stands for (= its point count unless HRsR collapsed it).
+    std::size_t represented_points = 0;
 };
 
 using LocalTriangle = std::array<std::uint32_t, 3>;

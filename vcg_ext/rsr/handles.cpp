@@ -1,8 +1,10 @@
 #include "rsr/handles.h"
 
 #include "geometry.h"
+#include "preprocess/components.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace hrsr::rsr {
@@ -25,18 +27,22 @@ bool is_open(const RotationSystem& rs, const Faces& faces, std::uint32_t v) {
 
 using FacePair = std::pair<std::uint32_t, std::uint32_t>;
 
+// D-27: a handle edge is an edge of the surface, so it obeys the normal filter θ of every other
+// edge (§3.3). Without it, the sides of a thin part (normals opposed) were grouped as handles.
 std::map<FacePair, std::vector<HandleCandidate>>
 collect_candidates(const RotationSystem& rs, const Faces& faces, GeometryCheck& geometry,
-                   const KnnIndex& index, int k, HandleStats& stats) {
+                   const KnnIndex& index, const PreprocessOptions& options, HandleStats& stats) {
+    const double min_cos = normal_filter_cosine(options);
     std::map<FacePair, std::vector<HandleCandidate>> groups;
     std::vector<Neighbour> found;
     for (std::uint32_t v = 0; v < rs.vertex_count(); ++v) {
         if (!is_open(rs, faces, v)) continue;
         ++stats.open_vertices;
-        index.neighbours_of(v, k, found);
+        index.neighbours_of(v, options.k, found);
         for (const Neighbour& nb : found) {
             const std::uint32_t w = nb.index;
-            if (rs.degree(w) == 0 || rs.adjacent(v, w)) continue;
+            if (rs.degree(w) == 0 || rs.adjacent(v, w) || rs.normal(v).dot(rs.normal(w)) < min_cos)
+                continue;
             const std::uint32_t fa = faces.face_of_wedge(v, w), fb = faces.face_of_wedge(w, v);
             // A handle joins two holes; entering a recorded triangle would unmake it.
             if (fa == fb || faces.is_recorded_triangle(fa) || faces.is_recorded_triangle(fb) ||
@@ -51,6 +57,15 @@ collect_candidates(const RotationSystem& rs, const Faces& faces, GeometryCheck& 
 }
 
 } // namespace
+
+std::size_t handle_hop_limit(double loop_spacings, std::size_t points,
+                             std::size_t represented_points) {
+    const double density = represented_points > points && points > 0
+                               ? double(points) / double(represented_points)
+                               : 1.0;
+    const double hops = std::round(loop_spacings * std::sqrt(density));
+    return std::max(constants::kMinHandleHops, std::size_t(hops));
+}
 
 std::size_t BoundedBfs::distance(const RotationSystem& rs, std::uint32_t a, std::uint32_t b,
                                  std::size_t limit) {
@@ -76,13 +91,13 @@ std::size_t BoundedBfs::distance(const RotationSystem& rs, std::uint32_t a, std:
 }
 
 HandleStats insert_handles(RotationSystem& rs, Faces& faces, GeometryCheck& geometry,
-                           const KnnIndex& index, const RsrOptions& options,
+                           const KnnIndex& index, const RsrOptions& options, std::size_t hop_limit,
                            const std::vector<LocalTriangle>& triangles,
                            std::vector<std::uint32_t>& roots, Observer* observer) {
     HandleStats stats;
+    stats.hop_limit = hop_limit;
     BoundedBfs bfs(rs.vertex_count());
-    const auto by_pair =
-        collect_candidates(rs, faces, geometry, index, options.preprocess.k, stats);
+    const auto by_pair = collect_candidates(rs, faces, geometry, index, options.preprocess, stats);
     // Largest groups first; ties by the face pair (D-10).
     std::vector<std::pair<FacePair, const std::vector<HandleCandidate>*>> groups;
     for (const auto& [pair, list] : by_pair) groups.emplace_back(pair, &list);
@@ -100,7 +115,7 @@ HandleStats insert_handles(RotationSystem& rs, Faces& faces, GeometryCheck& geom
         bool merged = false;
         for (const HandleCandidate& c : *list) {
             if (rs.adjacent(c.v, c.w)) continue;
-            const std::size_t limit = std::size_t(options.max_handle_hops);
+            const std::size_t limit = hop_limit;
             // Face labels are current (D-11): the first edge of a group merges its two faces,
             // later ones split the merged face. Recorded triangles are never entered.
             const std::uint32_t fa = faces.face_of_wedge(c.v, c.w),

@@ -17,13 +17,23 @@ struct HandleStats {
     std::size_t groups = 0;  ///< candidate groups (pairs of faces) of more than 5
     std::size_t handles = 0; ///< groups whose insertions merged two distinct faces (genus + 1 each)
     std::size_t edges_inserted = 0; ///< all handle-phase edges (merges and later splits)
-    bool limited = false; ///< the genus limit stopped a group that would have become a handle
+    bool limited = false;      ///< the genus limit stopped a group that would have become a handle
+    std::size_t hop_limit = 0; ///< graph hops a handle's endpoints had to be apart (D-27)
 };
 
-/// Inserts handle edges; `roots` receives their endpoints (explored first by the ears).
-/// `triangles` (those of the face-split phase) is only shown to the observer.
+/// D-27: the graph hops that stand for a loop of `loop_spacings` input point spacings on a cloud
+/// of `points` points that stands for `represented_points` input points. A graph hop is about one
+/// point spacing, and spacings grow as 1/sqrt(density): on HRsR's coarse cloud (p = points /
+/// represented) a loop of L input spacings is L · sqrt(p) hops. Never below
+/// constants::kMinHandleHops.
+std::size_t handle_hop_limit(double loop_spacings, std::size_t points,
+                             std::size_t represented_points);
+
+/// Inserts handle edges between points more than `hop_limit` graph hops apart; `roots` receives
+/// their endpoints (explored first by the ears). `triangles` (those of the face-split phase) is
+/// only shown to the observer.
 HandleStats insert_handles(RotationSystem& rotation, Faces& faces, GeometryCheck& geometry,
-                           const KnnIndex& index, const RsrOptions& options,
+                           const KnnIndex& index, const RsrOptions& options, std::size_t hop_limit,
                            const std::vector<LocalTriangle>& triangles,
                            std::vector<std::uint32_t>& roots, Observer* observer);
 

@@ -30,6 +30,7 @@ void reconstruct_part(const PreparedCloud& cloud, ComponentResult& part, const R
         local.positions.push_back(cloud.positions[i]);
         local.smoothed.push_back(cloud.smoothed[i]);
         local.normals.push_back(cloud.normals[i]);
+        local.represented_points += cloud.weights.empty() ? 1 : cloud.weights[i];
     }
     part.triangles = reconstruct_component(local, options, exec, part.stats, observer);
 }
@@ -79,6 +80,7 @@ CloudMesh reconstruct_cloud(const PreparedCloud& cloud, const RsrOptions& option
         mesh.face_split_edges += s.face_split.inserted;
         mesh.handle_edges += s.handles.edges_inserted;
         mesh.handles += s.handles.handles;
+        mesh.handle_hop_limits.push_back(s.handles.hop_limit);
         mesh.ear_edges += s.ears.ears;
         add_timings(mesh.timings, s.timings);
     }

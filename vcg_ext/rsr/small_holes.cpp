@@ -11,16 +11,6 @@ namespace hrsr::rsr {
 
 namespace {
 
-double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-    auto angle = [](const Vec3& apex, const Vec3& p, const Vec3& q) {
-        const Vec3 u = p - apex, v = q - apex;
-        const double nu = u.Norm(), nv = v.Norm();
-        if (nu == 0 || nv == 0) return 0.0;
-        return std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0));
-    };
-    return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
-}
-
 bool edges_have_room(const RotationSystem& rs, const std::vector<std::uint32_t>& cycle) {
     for (std::size_t k = 0; k < cycle.size(); ++k)
         if (triangles_on_edge(rs, cycle[k], cycle[(k + 1) % cycle.size()]) >= 2) return false;
