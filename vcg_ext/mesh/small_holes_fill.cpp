@@ -87,13 +87,13 @@ bool is_triangle(const std::vector<Triangle>& triangles, const std::vector<std::
     return existing.count(sorted_corners({loop[0], loop[1], loop[2]})) > 0;
 }
 
-// The fan (triangulation) of the loop with the largest smallest angle among those whose
-// diagonals are not edges; empty if none reaches kMinFanAngle.
-std::vector<Triangle> best_fan(const std::vector<std::uint32_t>& loop, const DirectedEdges& edges,
-                               const std::vector<Vec3>& positions) {
+// The fans (triangulations) of the loop whose diagonals are not edges and whose smallest angle
+// reaches kMinFanAngle, best (largest smallest angle) first; ties by apex position.
+std::vector<std::vector<Triangle>> candidate_fans(const std::vector<std::uint32_t>& loop,
+                                                  const DirectedEdges& edges,
+                                                  const std::vector<Vec3>& positions) {
     const std::size_t n = loop.size();
-    std::vector<Triangle> best;
-    double best_angle = kMinFanAngle;
+    std::vector<std::pair<double, std::vector<Triangle>>> fans;
     for (std::size_t apex = 0; apex < n; ++apex) {
         std::vector<Triangle> fan;
         double angle = M_PI;
@@ -105,83 +105,116 @@ std::vector<Triangle> best_fan(const std::vector<std::uint32_t>& loop, const Dir
             angle = std::min(angle, smallest_angle(positions[a], positions[b], positions[c]));
             fan.push_back({a, b, c});
         }
-        if (free && angle > best_angle) {
-            best_angle = angle;
-            best = std::move(fan);
-        }
+        if (free && angle > kMinFanAngle) fans.emplace_back(angle, std::move(fan));
+        if (n == 3) break; // a triangle has one triangulation
     }
-    return best;
+    std::stable_sort(fans.begin(), fans.end(),
+                     [](const auto& x, const auto& y) { return x.first > y.first; });
+    std::vector<std::vector<Triangle>> out;
+    for (auto& f : fans) out.push_back(std::move(f.second));
+    return out;
 }
 
 struct Fill {
-    std::vector<Triangle> fan;
+    std::vector<std::vector<Triangle>> fans; ///< candidates, best first
+    std::vector<bool> crossing;              ///< per candidate: it intersects the mesh or itself
+    int chosen = -1;                         ///< the first candidate that does not
     Box box;
-    bool rejected = false;
 };
 
-// Rejects fills whose triangles intersect a triangle of the mesh or of another fill (the test of
-// hrsr check): a fill must not add a fold. Fills are filed in a hash grid of cells as large as
-// the largest fill; one pass over the mesh tests each triangle against the fills it may touch.
-void reject_intersecting(std::vector<Fill>& fills, const std::vector<Triangle>& triangles,
-                         const std::vector<Vec3>& positions) {
-    if (fills.empty()) return;
-    const TriangleGeometry g(positions, {});
-    double cell = 0;
-    for (const Fill& f : fills)
-        for (int k = 0; k < 3; ++k) cell = std::max(cell, f.box.hi[k] - f.box.lo[k]);
-    if (!(cell > 0)) return;
-    auto key = [&](const Vec3& p, int k) { return std::int64_t(std::floor(p[k] / cell)); };
-    auto cell_id = [](std::int64_t x, std::int64_t y, std::int64_t z) {
-        return std::uint64_t((x * 73856093) ^ (y * 19349663) ^ (z * 83492791));
-    };
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
-    auto for_cells = [&](const Box& b, auto&& visit) {
+/// Files fills in a hash grid of cells as large as the largest fill, so that one pass over the
+/// mesh tests each triangle against the fills it may touch only.
+class FillGrid {
+public:
+    FillGrid(const std::vector<Fill>& fills, const std::vector<Vec3>& positions)
+        : positions_(positions), count_(fills.size()) {
+        for (const Fill& f : fills)
+            for (int k = 0; k < 3; ++k) cell_ = std::max(cell_, f.box.hi[k] - f.box.lo[k]);
+        if (!(cell_ > 0)) cell_ = 1;
+        for (std::uint32_t i = 0; i < fills.size(); ++i)
+            for_cells(fills[i].box, [&](std::uint64_t c) { cells_[c].push_back(i); });
+    }
+
+    Box box(const Triangle& t) const {
+        Box b{positions_[t[0]], positions_[t[0]]};
+        b.add(positions_[t[1]]);
+        b.add(positions_[t[2]]);
+        return b;
+    }
+
+    /// The fills whose cells `b` covers (every fill when b is much larger than a cell).
+    void near(const Box& b, std::vector<std::uint32_t>& out) const {
+        out.clear();
+        const double extent = std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
+        if (extent > 8 * cell_) {
+            for (std::uint32_t i = 0; i < count_; ++i) out.push_back(i);
+            return;
+        }
+        for_cells(b, [&](std::uint64_t c) {
+            if (auto it = cells_.find(c); it != cells_.end())
+                out.insert(out.end(), it->second.begin(), it->second.end());
+        });
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+    }
+
+private:
+    template <class Visit>
+    void for_cells(const Box& b, Visit&& visit) const {
+        auto key = [&](const Vec3& p, int k) { return std::int64_t(std::floor(p[k] / cell_)); };
         for (std::int64_t x = key(b.lo, 0); x <= key(b.hi, 0); ++x)
             for (std::int64_t y = key(b.lo, 1); y <= key(b.hi, 1); ++y)
-                for (std::int64_t z = key(b.lo, 2); z <= key(b.hi, 2); ++z) visit(cell_id(x, y, z));
-    };
-    for (std::uint32_t i = 0; i < fills.size(); ++i)
-        for_cells(fills[i].box, [&](std::uint64_t c) { grid[c].push_back(i); });
-    auto crosses = [&](const Fill& f, const Triangle& t) {
-        for (const Triangle& s : f.fan)
-            if (g.intersect(s, t)) return true;
-        return false;
-    };
-    auto corners_box = [&](const Triangle& t) {
-        Box b{positions[t[0]], positions[t[0]]};
-        b.add(positions[t[1]]);
-        b.add(positions[t[2]]);
-        return b;
-    };
+                for (std::int64_t z = key(b.lo, 2); z <= key(b.hi, 2); ++z)
+                    visit(std::uint64_t((x * 73856093) ^ (y * 19349663) ^ (z * 83492791)));
+    }
+    const std::vector<Vec3>& positions_;
+    std::size_t count_;
+    double cell_ = 0;
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
+};
+
+// A fill must not add a fold (the hrsr check test): each loop takes its best fan that intersects
+// neither the mesh nor itself, and a fill whose fan intersects an earlier fill's is dropped.
+void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangles,
+                 const std::vector<Vec3>& positions) {
+    if (fills.empty()) return;
+    const TriangleGeometry g(positions, {});
+    const FillGrid grid(fills, positions);
+    for (Fill& f : fills) {
+        f.crossing.assign(f.fans.size(), false);
+        for (std::size_t k = 0; k < f.fans.size(); ++k)
+            for (std::size_t a = 0; a < f.fans[k].size(); ++a)
+                for (std::size_t b = a + 1; b < f.fans[k].size(); ++b)
+                    if (g.intersect(f.fans[k][a], f.fans[k][b])) f.crossing[k] = true;
+    }
     std::vector<std::uint32_t> near;
-    auto test = [&](const Triangle& t, std::uint32_t own) {
-        const Box b = corners_box(t);
-        // A triangle much larger than the cells would visit many empty cells: test it against
-        // every fill instead (there are few).
-        const double extent = std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
-        near.clear();
-        if (extent > 8 * cell) {
-            for (std::uint32_t i = 0; i < fills.size(); ++i) near.push_back(i);
-        } else {
-            for_cells(b, [&](std::uint64_t c) {
-                if (auto it = grid.find(c); it != grid.end())
-                    near.insert(near.end(), it->second.begin(), it->second.end());
-            });
-            std::sort(near.begin(), near.end());
-            near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (const Triangle& t : triangles) {
+        const Box b = grid.box(t);
+        grid.near(b, near);
+        for (std::uint32_t i : near) {
+            Fill& f = fills[i];
+            if (!f.box.overlaps(b)) continue;
+            for (std::size_t k = 0; k < f.fans.size(); ++k)
+                for (const Triangle& s : f.fans[k])
+                    if (!f.crossing[k] && g.intersect(s, t)) f.crossing[k] = true;
         }
-        for (std::uint32_t i : near)
-            if (i != own && fills[i].box.overlaps(b) && crosses(fills[i], t))
-                fills[i].rejected = true;
-    };
-    for (const Triangle& t : triangles) test(t, kNone);
-    // Fills against each other (and the fan's own triangles against each other).
-    for (std::uint32_t i = 0; i < fills.size(); ++i)
-        for (std::size_t a = 0; a < fills[i].fan.size(); ++a) {
-            for (std::size_t b = a + 1; b < fills[i].fan.size(); ++b)
-                if (g.intersect(fills[i].fan[a], fills[i].fan[b])) fills[i].rejected = true;
-            test(fills[i].fan[a], i);
+    }
+    for (Fill& f : fills)
+        for (std::size_t k = 0; k < f.fans.size() && f.chosen < 0; ++k)
+            if (!f.crossing[k]) f.chosen = int(k);
+    for (std::uint32_t i = 0; i < fills.size(); ++i) {
+        if (fills[i].chosen < 0) continue;
+        for (const Triangle& s : fills[i].fans[std::size_t(fills[i].chosen)]) {
+            grid.near(grid.box(s), near);
+            for (std::uint32_t j : near) {
+                if (j >= i || fills[j].chosen < 0) continue;
+                for (const Triangle& u : fills[j].fans[std::size_t(fills[j].chosen)])
+                    if (g.intersect(s, u)) fills[i].chosen = -1;
+                if (fills[i].chosen < 0) break;
+            }
+            if (fills[i].chosen < 0) break;
         }
+    }
 }
 
 } // namespace
@@ -198,18 +231,19 @@ std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector
             if (next[v] == kNone || !short_loop(next, v, max_edges, loop)) continue;
             if (loop.size() == 3 && is_triangle(triangles, loop, existing)) continue;
             Fill f;
-            f.fan = best_fan(loop, edges, positions);
-            if (f.fan.empty()) continue;
+            f.fans = candidate_fans(loop, edges, positions);
+            if (f.fans.empty()) continue;
             f.box = {positions[loop[0]], positions[loop[0]]};
             for (std::uint32_t x : loop) f.box.add(positions[x]);
             fills.push_back(std::move(f));
         }
     }
-    reject_intersecting(fills, triangles, positions);
+    choose_fans(fills, triangles, positions);
     std::size_t closed = 0;
     for (const Fill& f : fills) {
-        if (f.rejected) continue;
-        triangles.insert(triangles.end(), f.fan.begin(), f.fan.end());
+        if (f.chosen < 0) continue;
+        const std::vector<Triangle>& fan = f.fans[std::size_t(f.chosen)];
+        triangles.insert(triangles.end(), fan.begin(), fan.end());
         ++closed;
     }
     return closed;

@@ -13,12 +13,14 @@ namespace hrsr {
 /// points is a gap of about one point spacing, not a hole in the data.
 inline constexpr std::size_t kMaxFilledLoop = 5;
 
-/// Closes every boundary loop of 3 … `max_edges` distinct vertices, each of which has no other
-/// boundary edge, by the fan (one of the loop's triangulations) with the largest smallest angle
-/// whose diagonals are not edges yet; loops whose best fan has an angle below 1° are left open.
-/// New triangles follow the loop's winding, so the mesh stays edge- and vertex-manifold and
-/// coherently oriented. `positions` are per vertex. Returns the number of loops closed.
-/// Deterministic: loops are visited in order of their smallest vertex.
+/// Closes every boundary loop of 3 … `max_edges` distinct vertices, each of which borders no
+/// other hole, by the best fan (one of the loop's triangulations; best = largest smallest angle,
+/// at least 1°) whose diagonals are not edges yet and whose triangles intersect neither the mesh
+/// nor an earlier fill (the `hrsr check` test): a fill never adds a fold. New triangles follow
+/// the loop's winding, so the mesh stays edge- and vertex-manifold and coherently oriented; a
+/// 3-loop that is already a triangle (a lone triangle's outline) stays open. `positions` are per
+/// vertex. Returns the number of loops closed. Deterministic (loops in order of their smallest
+/// vertex).
 std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& positions,
                              std::size_t max_edges = kMaxFilledLoop);
 

@@ -1,0 +1,121 @@
+// D-28: closing the boundary loops of at most five edges of an output mesh, on hand-built meshes.
+#include "mesh/mesh_stats.h"
+#include "mesh/self_intersections.h"
+#include "mesh/small_holes_fill.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace hrsr {
+namespace {
+
+/// The regular icosahedron: 12 vertices, 20 triangles wound counter-clockwise from outside;
+/// every vertex has degree 5.
+void icosahedron(std::vector<Vec3>& v, std::vector<Triangle>& t) {
+    const double g = (1 + std::sqrt(5.0)) / 2;
+    v = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+         {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+    t = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+         {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+}
+
+/// Removes every triangle around vertex `centre` (a hole as long as its degree).
+std::vector<Triangle> without_star(const std::vector<Triangle>& t, std::uint32_t centre) {
+    std::vector<Triangle> out;
+    for (const Triangle& f : t)
+        if (f[0] != centre && f[1] != centre && f[2] != centre) out.push_back(f);
+    return out;
+}
+
+void expect_closed_sphere(const std::vector<Vec3>& v, const std::vector<Triangle>& t) {
+    const MeshStats m = measure_mesh(v.size(), t);
+    EXPECT_EQ(m.boundary_edges, 0u);
+    EXPECT_EQ(m.non_manifold_edges, 0u);
+    EXPECT_EQ(m.non_manifold_vertices, 0u);
+    EXPECT_EQ(m.inconsistently_oriented_edges, 0u);
+    ASSERT_EQ(m.components.size(), 1u);
+    EXPECT_EQ(m.components[0].genus(), 0);
+}
+
+TEST(FillSmallHoles, TheIcosahedronIsClosedAsItIs) {
+    std::vector<Vec3> v;
+    std::vector<Triangle> t;
+    icosahedron(v, t);
+    expect_closed_sphere(v, t);
+    EXPECT_EQ(fill_small_holes(t, v), 0u);
+    EXPECT_EQ(t.size(), 20u);
+}
+
+TEST(FillSmallHoles, ATriangleHoleIsClosed) {
+    std::vector<Vec3> v;
+    std::vector<Triangle> t;
+    icosahedron(v, t);
+    t.erase(t.begin() + 7);
+    EXPECT_EQ(fill_small_holes(t, v), 1u);
+    EXPECT_EQ(t.size(), 20u);
+    expect_closed_sphere(v, t);
+}
+
+// Vertex 0 removed with its five triangles: a pentagon, closed by three triangles (the vertex
+// stays unreferenced), coherently wound and without self-intersection.
+TEST(FillSmallHoles, APentagonHoleIsClosedByAFan) {
+    std::vector<Vec3> v;
+    std::vector<Triangle> t;
+    icosahedron(v, t);
+    t = without_star(t, 0);
+    ASSERT_EQ(measure_mesh(v.size(), t).boundary_edges, 5u);
+    EXPECT_EQ(fill_small_holes(t, v), 1u);
+    EXPECT_EQ(t.size(), 18u);
+    expect_closed_sphere(v, t);
+    EXPECT_TRUE(self_intersecting_pairs(v, t, {}).empty());
+}
+
+// Two neighbouring vertices removed: a hole of 8 edges stays open (more than five points around
+// it is a hole in the data), and so does a pentagon when max_edges is 4.
+TEST(FillSmallHoles, LargerLoopsStayOpen) {
+    std::vector<Vec3> v;
+    std::vector<Triangle> t;
+    icosahedron(v, t);
+    t = without_star(without_star(t, 0), 1);
+    const std::size_t before = t.size();
+    EXPECT_EQ(fill_small_holes(t, v), 0u);
+    EXPECT_EQ(t.size(), before);
+
+    icosahedron(v, t);
+    t = without_star(t, 0);
+    EXPECT_EQ(fill_small_holes(t, v, 4), 0u);
+}
+
+// A lone triangle's outline is a 3-loop, but closing it would double the triangle.
+TEST(FillSmallHoles, ALoneTriangleStaysOpen) {
+    const std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    std::vector<Triangle> t{{0, 1, 2}};
+    EXPECT_EQ(fill_small_holes(t, v), 0u);
+    EXPECT_EQ(t.size(), 1u);
+}
+
+// A separate triangle pierces the pentagon hole: every fan would intersect it, so the hole
+// stays open rather than gain a fold.
+TEST(FillSmallHoles, AFillThatWouldIntersectTheMeshIsNotMade) {
+    std::vector<Vec3> v;
+    std::vector<Triangle> t;
+    icosahedron(v, t);
+    t = without_star(t, 0);
+    // The hole lies around the axis from the centre through vertex 0; a thin triangle along
+    // that axis crosses every triangulation of it.
+    const Vec3 axis = v[0] / v[0].Norm();
+    const Vec3 side = (axis ^ Vec3(0, 0, 1)) / (axis ^ Vec3(0, 0, 1)).Norm();
+    const auto first = std::uint32_t(v.size());
+    v.push_back(axis * 0.2 - side * 0.05);
+    v.push_back(axis * 0.2 + side * 0.05);
+    v.push_back(axis * 3.0);
+    t.push_back({first, first + 1, first + 2});
+    EXPECT_EQ(fill_small_holes(t, v), 0u);
+    EXPECT_EQ(measure_mesh(v.size(), t).boundary_edges, 5u + 3u);
+}
+
+} // namespace
+} // namespace hrsr
