@@ -6,6 +6,7 @@
 #include "io/point_set_reader.h"
 #include "mesh/mesh_stats.h"
 #include "reconstruction.h"
+#include "rsr/handles.h"
 #include "samplers.h"
 
 #include <gtest/gtest.h>
@@ -112,6 +113,17 @@ TEST_P(TopologyAtDefaults, ClosedManifoldOfTheSurfaceGenus) {
     if (method.p == 1) {
         EXPECT_EQ(report.handle_hop_limits[0], std::size_t(options.rsr.min_handle_loop));
     }
+}
+
+// D-27: n spacings of the input are n hops on the full cloud and n·sqrt(p) hops on a coarse
+// cloud that keeps a fraction p of the points, never fewer than 4.
+TEST(HandleHopLimit, ScalesWithTheSquareRootOfTheCollapseRatio) {
+    EXPECT_EQ(rsr::handle_hop_limit(20, 1000, 1000), 20u);
+    EXPECT_EQ(rsr::handle_hop_limit(20, 1250, 10000), 7u);  // 20 · sqrt(1/8) = 7.07
+    EXPECT_EQ(rsr::handle_hop_limit(20, 2500, 10000), 10u); // p = 1/4
+    EXPECT_EQ(rsr::handle_hop_limit(50, 5000, 10000), 35u); // 35.36
+    EXPECT_EQ(rsr::handle_hop_limit(20, 10, 100000), 4u);   // the floor
+    EXPECT_EQ(rsr::handle_hop_limit(20, 1000, 500), 20u);   // never more than the points: p = 1
 }
 
 const Method kMethods[] = {{"Rsr", 1.0}, {"Half", 0.5}, {"Quarter", 0.25}, {"Eighth", 0.125}};

@@ -80,7 +80,7 @@ CloudMesh reconstruct_cloud(const PreparedCloud& cloud, const RsrOptions& option
         mesh.face_split_edges += s.face_split.inserted;
         mesh.handle_edges += s.handles.edges_inserted;
         mesh.handles += s.handles.handles;
-        mesh.handle_hop_limits.push_back(s.handles.hop_limit);
+        if (s.handles.hop_limit > 0) mesh.handle_hop_limits.push_back(s.handles.hop_limit);
         mesh.ear_edges += s.ears.ears;
         add_timings(mesh.timings, s.timings);
     }

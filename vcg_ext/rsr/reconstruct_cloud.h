@@ -19,7 +19,7 @@ struct CloudMesh {
     std::size_t candidates = 0, tree_edges = 0, face_split_edges = 0, handle_edges = 0,
                 ear_edges = 0;
     std::size_t handles = 0;
-    std::vector<std::size_t> handle_hop_limits; ///< per component, in component order (D-27)
+    std::vector<std::size_t> handle_hop_limits; ///< per component reconstructed, in order (D-27)
     std::vector<std::pair<std::string, double>> timings; ///< summed over components
 };
 
