@@ -191,10 +191,11 @@ def markdown(results):
             cells = [cell_text(index.get((shape, n, density, noise, normals, m))) for m in methods]
             out.append(f"| {shape} | {n} | {density} | " + " | ".join(cells) + " |")
     ours = [r for r in results if r["method"] != "cgal"]
-    out.append(f"\nExact: {sum(r['exact'] for r in ours)} of {len(ours)} cells of ours")
+    total = f"\nExact: {sum(r['exact'] for r in ours)} of {len(ours)} cells of ours"
     cgal = [r for r in results if r["method"] == "cgal"]
     if cgal:
-        out.append(f"; CGAL Advancing Front {sum(r['exact'] for r in cgal)} of {len(cgal)}.\n")
+        total += f"; CGAL Advancing Front {sum(r['exact'] for r in cgal)} of {len(cgal)}"
+    out.append(total + ".")
     return "\n".join(out) + "\n"
 
 

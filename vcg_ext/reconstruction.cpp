@@ -314,13 +314,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     std::sort(report.not_in_triangle.begin(), report.not_in_triangle.end());
     std::sort(report.dropped_small_coarse_component.begin(),
               report.dropped_small_coarse_component.end());
-    {
-        std::vector<Vec3> vertex_positions;
-        vertex_positions.reserve(fine.vertex_node.size());
-        for (std::uint32_t node : fine.vertex_node)
-            vertex_positions.push_back(cloud.positions[node]);
-        report.small_holes_filled = fill_small_holes(fine.triangles, vertex_positions);
-    }
+    report.small_holes_filled = fill_small_holes(fine.triangles, cloud.positions, fine.vertex_node);
     // The re-expanded mesh is manifold by construction; the fan split is a safety net.
     CompactMesh out = compact(fine.vertex_node.size(), std::move(fine.triangles));
     report.vertex_copies += out.copies;

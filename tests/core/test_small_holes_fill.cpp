@@ -86,7 +86,7 @@ TEST(FillSmallHoles, LargerLoopsStayOpen) {
 
     icosahedron(v, t);
     t = without_star(t, 0);
-    EXPECT_EQ(fill_small_holes(t, v, 4), 0u);
+    EXPECT_EQ(fill_small_holes(t, v, {}, 4), 0u);
 }
 
 // A lone triangle's outline is a 3-loop, but closing it would double the triangle.

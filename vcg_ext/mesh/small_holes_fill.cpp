@@ -17,40 +17,61 @@ constexpr std::uint32_t kNone = 0xffffffffu;
 constexpr std::uint32_t kMany = 0xfffffffeu;
 const double kMinFanAngle = M_PI / 180.0;
 
-std::uint64_t directed(std::uint32_t a, std::uint32_t b) {
-    return (std::uint64_t(a) << 32) | b;
-}
+/// Vertex v at points[vertex_point[v]] (or points[v] when vertex_point is empty): HRsR's
+/// vertices stand for cloud points, and a copy of their positions would add to the peak.
+struct VertexPositions {
+    const std::vector<Vec3>& points;
+    const std::vector<std::uint32_t>& vertex_point;
+    std::size_t vertex_count;
+    std::uint32_t point(std::uint32_t v) const {
+        return vertex_point.empty() ? v : vertex_point[v];
+    }
+    const Vec3& operator[](std::uint32_t v) const { return points[point(v)]; }
+    /// The triangle over point ids, for the intersection test (which compares corner ids).
+    Triangle as_points(const Triangle& t) const { return {point(t[0]), point(t[1]), point(t[2])}; }
+};
 
-/// The mesh's directed edges, sorted: 8 bytes per corner, no hash table (D-28 runs on the whole
-/// output, so its memory counts against the peak).
+/// The mesh's directed edges, looked up through the triangles around each vertex (a CSR of 4
+/// bytes per corner: D-28 runs on the whole output, so its memory counts against the peak).
 class DirectedEdges {
 public:
-    explicit DirectedEdges(const std::vector<Triangle>& triangles) {
-        keys_.reserve(triangles.size() * 3);
-        for (const Triangle& t : triangles)
-            for (int k = 0; k < 3; ++k) keys_.push_back(directed(t[k], t[(k + 1) % 3]));
-        std::sort(keys_.begin(), keys_.end());
-    }
+    DirectedEdges(const std::vector<Triangle>& triangles, std::size_t vertices)
+        : triangles_(triangles), corners_(corners_by_vertex(vertices, triangles)) {}
+    /// Some triangle has the directed edge a → b.
     bool has(std::uint32_t a, std::uint32_t b) const {
-        return std::binary_search(keys_.begin(), keys_.end(), directed(a, b));
+        for (std::uint32_t i = corners_.begin(a); i < corners_.end(a); ++i) {
+            const std::uint32_t c = corners_.corner[i];
+            if (triangles_[c / 3][(c % 3 + 1) % 3] == b) return true;
+        }
+        return false;
     }
-    bool has_either(std::uint32_t a, std::uint32_t b) const { return has(a, b) || has(b, a); }
-    const std::vector<std::uint64_t>& keys() const { return keys_; }
+    /// Some triangle has the edge {a, b}.
+    bool has_either(std::uint32_t a, std::uint32_t b) const {
+        for (std::uint32_t i = corners_.begin(a); i < corners_.end(a); ++i) {
+            const std::uint32_t c = corners_.corner[i];
+            const Triangle& t = triangles_[c / 3];
+            if (t[(c % 3 + 1) % 3] == b || t[(c % 3 + 2) % 3] == b) return true;
+        }
+        return false;
+    }
 
 private:
-    std::vector<std::uint64_t> keys_;
+    const std::vector<Triangle>& triangles_;
+    VertexCorners corners_;
 };
 
 // next[v]: the vertex after v along the hole it borders (a → b is a boundary edge of a triangle
 // when no triangle has b → a; the hole then runs b → a), kNone when v is on no hole, kMany when
 // on more than one hole edge.
-std::vector<std::uint32_t> hole_successors(const DirectedEdges& edges, std::size_t vertices) {
+std::vector<std::uint32_t> hole_successors(const std::vector<Triangle>& triangles,
+                                           const DirectedEdges& edges, std::size_t vertices) {
     std::vector<std::uint32_t> next(vertices, kNone);
-    for (std::uint64_t key : edges.keys()) {
-        const std::uint32_t a = std::uint32_t(key >> 32), b = std::uint32_t(key);
-        if (edges.has(b, a)) continue;
-        next[b] = next[b] == kNone ? a : kMany;
-    }
+    for (const Triangle& t : triangles)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+            if (edges.has(b, a)) continue;
+            next[b] = next[b] == kNone ? a : kMany;
+        }
     return next;
 }
 
@@ -91,7 +112,7 @@ bool is_triangle(const std::vector<Triangle>& triangles, const std::vector<std::
 // reaches kMinFanAngle, best (largest smallest angle) first; ties by apex position.
 std::vector<std::vector<Triangle>> candidate_fans(const std::vector<std::uint32_t>& loop,
                                                   const DirectedEdges& edges,
-                                                  const std::vector<Vec3>& positions) {
+                                                  const VertexPositions& positions) {
     const std::size_t n = loop.size();
     std::vector<std::pair<double, std::vector<Triangle>>> fans;
     for (std::size_t apex = 0; apex < n; ++apex) {
@@ -126,7 +147,7 @@ struct Fill {
 /// mesh tests each triangle against the fills it may touch only.
 class FillGrid {
 public:
-    FillGrid(const std::vector<Fill>& fills, const std::vector<Vec3>& positions)
+    FillGrid(const std::vector<Fill>& fills, const VertexPositions& positions)
         : positions_(positions), count_(fills.size()) {
         for (const Fill& f : fills)
             for (int k = 0; k < 3; ++k) cell_ = std::max(cell_, f.box.hi[k] - f.box.lo[k]);
@@ -167,7 +188,7 @@ private:
                 for (std::int64_t z = key(b.lo, 2); z <= key(b.hi, 2); ++z)
                     visit(std::uint64_t((x * 73856093) ^ (y * 19349663) ^ (z * 83492791)));
     }
-    const std::vector<Vec3>& positions_;
+    const VertexPositions& positions_;
     std::size_t count_;
     double cell_ = 0;
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
@@ -176,16 +197,19 @@ private:
 // A fill must not add a fold (the hrsr check test): each loop takes its best fan that intersects
 // neither the mesh nor itself, and a fill whose fan intersects an earlier fill's is dropped.
 void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangles,
-                 const std::vector<Vec3>& positions) {
+                 const VertexPositions& positions) {
     if (fills.empty()) return;
-    const TriangleGeometry g(positions, {});
+    const TriangleGeometry geometry(positions.points, {});
+    auto intersect = [&](const Triangle& a, const Triangle& b) {
+        return geometry.intersect(positions.as_points(a), positions.as_points(b));
+    };
     const FillGrid grid(fills, positions);
     for (Fill& f : fills) {
         f.crossing.assign(f.fans.size(), false);
         for (std::size_t k = 0; k < f.fans.size(); ++k)
             for (std::size_t a = 0; a < f.fans[k].size(); ++a)
                 for (std::size_t b = a + 1; b < f.fans[k].size(); ++b)
-                    if (g.intersect(f.fans[k][a], f.fans[k][b])) f.crossing[k] = true;
+                    if (intersect(f.fans[k][a], f.fans[k][b])) f.crossing[k] = true;
     }
     std::vector<std::uint32_t> near;
     for (const Triangle& t : triangles) {
@@ -196,7 +220,7 @@ void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangle
             if (!f.box.overlaps(b)) continue;
             for (std::size_t k = 0; k < f.fans.size(); ++k)
                 for (const Triangle& s : f.fans[k])
-                    if (!f.crossing[k] && g.intersect(s, t)) f.crossing[k] = true;
+                    if (!f.crossing[k] && intersect(s, t)) f.crossing[k] = true;
         }
     }
     for (Fill& f : fills)
@@ -209,7 +233,7 @@ void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangle
             for (std::uint32_t j : near) {
                 if (j >= i || fills[j].chosen < 0) continue;
                 for (const Triangle& u : fills[j].fans[std::size_t(fills[j].chosen)])
-                    if (g.intersect(s, u)) fills[i].chosen = -1;
+                    if (intersect(s, u)) fills[i].chosen = -1;
                 if (fills[i].chosen < 0) break;
             }
             if (fills[i].chosen < 0) break;
@@ -219,12 +243,16 @@ void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangle
 
 } // namespace
 
-std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& positions,
+std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
+                             const std::vector<std::uint32_t>& vertex_point,
                              std::size_t max_edges) {
+    const VertexPositions positions{points, vertex_point,
+                                    vertex_point.empty() ? points.size() : vertex_point.size()};
     std::vector<Fill> fills;
     {
-        const DirectedEdges edges(triangles);
-        const std::vector<std::uint32_t> next = hole_successors(edges, positions.size());
+        const DirectedEdges edges(triangles, positions.vertex_count);
+        const std::vector<std::uint32_t> next =
+            hole_successors(triangles, edges, positions.vertex_count);
         std::vector<std::uint32_t> loop;
         TriangleSet existing;
         for (std::uint32_t v = 0; v < next.size(); ++v) {

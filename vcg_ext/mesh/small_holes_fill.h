@@ -18,10 +18,12 @@ inline constexpr std::size_t kMaxFilledLoop = 5;
 /// at least 1°) whose diagonals are not edges yet and whose triangles intersect neither the mesh
 /// nor an earlier fill (the `hrsr check` test): a fill never adds a fold. New triangles follow
 /// the loop's winding, so the mesh stays edge- and vertex-manifold and coherently oriented; a
-/// 3-loop that is already a triangle (a lone triangle's outline) stays open. `positions` are per
-/// vertex. Returns the number of loops closed. Deterministic (loops in order of their smallest
+/// 3-loop that is already a triangle (a lone triangle's outline) stays open. Vertex v lies at
+/// points[vertex_point[v]], or at points[v] when vertex_point is empty. Returns the number of
+/// loops closed. Deterministic (loops in order of their smallest
 /// vertex).
-std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& positions,
+std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
+                             const std::vector<std::uint32_t>& vertex_point = {},
                              std::size_t max_edges = kMaxFilledLoop);
 
 } // namespace hrsr
