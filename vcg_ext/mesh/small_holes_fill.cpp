@@ -4,9 +4,7 @@
 #include "mesh/triangle_grid.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <set>
 #include <unordered_map>
 
 namespace hrsr {
@@ -54,6 +52,16 @@ public:
         }
         return false;
     }
+    /// Some triangle has the corners a, b, c (in either winding): a 3-loop around it is that
+    /// triangle's outline (a lone triangle), and closing it would double the triangle.
+    bool has_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
+        for (std::uint32_t i = corners_.begin(a); i < corners_.end(a); ++i) {
+            const Triangle& t = triangles_[corners_.corner[i] / 3];
+            const auto has = [&](std::uint32_t x) { return t[0] == x || t[1] == x || t[2] == x; };
+            if (has(b) && has(c)) return true;
+        }
+        return false;
+    }
 
 private:
     const std::vector<Triangle>& triangles_;
@@ -90,22 +98,6 @@ bool short_loop(const std::vector<std::uint32_t>& next, std::uint32_t v, std::si
     std::vector<std::uint32_t> sorted = loop;
     std::sort(sorted.begin(), sorted.end());
     return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end() && sorted.front() == v;
-}
-
-using TriangleSet = std::set<std::array<std::uint32_t, 3>>;
-
-std::array<std::uint32_t, 3> sorted_corners(std::array<std::uint32_t, 3> t) {
-    std::sort(t.begin(), t.end());
-    return t;
-}
-
-// Whether the three vertices of a 3-loop already form a triangle (a lone triangle's outline:
-// closing it would double the triangle). The set is built on first use: 3-loops are rare.
-bool is_triangle(const std::vector<Triangle>& triangles, const std::vector<std::uint32_t>& loop,
-                 TriangleSet& existing) {
-    if (existing.empty())
-        for (const Triangle& t : triangles) existing.insert(sorted_corners(t));
-    return existing.count(sorted_corners({loop[0], loop[1], loop[2]})) > 0;
 }
 
 // The fans (triangulations) of the loop whose diagonals are not edges and whose smallest angle
@@ -254,10 +246,9 @@ std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector
         const std::vector<std::uint32_t> next =
             hole_successors(triangles, edges, positions.vertex_count);
         std::vector<std::uint32_t> loop;
-        TriangleSet existing;
         for (std::uint32_t v = 0; v < next.size(); ++v) {
             if (next[v] == kNone || !short_loop(next, v, max_edges, loop)) continue;
-            if (loop.size() == 3 && is_triangle(triangles, loop, existing)) continue;
+            if (loop.size() == 3 && edges.has_triangle(loop[0], loop[1], loop[2])) continue;
             Fill f;
             f.fans = candidate_fans(loop, edges, positions);
             if (f.fans.empty()) continue;

@@ -115,13 +115,13 @@ HandleStats insert_handles(RotationSystem& rs, Faces& faces, GeometryCheck& geom
         bool merged = false;
         for (const HandleCandidate& c : *list) {
             if (rs.adjacent(c.v, c.w)) continue;
-            const std::size_t limit = hop_limit;
             // Face labels are current (D-11): the first edge of a group merges its two faces,
             // later ones split the merged face. Recorded triangles are never entered.
             const std::uint32_t fa = faces.face_of_wedge(c.v, c.w),
                                 fb = faces.face_of_wedge(c.w, c.v);
             if (faces.is_recorded_triangle(fa) || faces.is_recorded_triangle(fb)) continue;
-            if (bfs.distance(rs, c.v, c.w, limit) <= limit || !geometry.passes(c.v, c.w)) continue;
+            if (bfs.distance(rs, c.v, c.w, hop_limit) <= hop_limit || !geometry.passes(c.v, c.w))
+                continue;
             const bool joins = fa != fb;
             const auto [d1, d2] = rs.insert_edge(c.v, c.w);
             if (joins)
