@@ -162,6 +162,7 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"unresolved_crossings", e.unresolved_crossings},
               {"crossing_flips", e.crossing_flips},
               {"boundary_triangles_removed", e.triangles_removed},
+              {"unsampled_triangles_removed", r.unsampled_triangles_removed},
               {"improvement_flips", e.improvement_flips},
               {"merged_by_l_min", e.merged_by_l_min},
 

@@ -135,6 +135,10 @@ inline constexpr double kEuclideanNormalAngleDegrees = 90.0;
 inline constexpr int kPointsPerNeighbour = 2000;
 inline constexpr int kMinNeighbours = 16;
 inline constexpr int kMaxNeighbours = 192;
+/// D-29: on clouds of fewer than 16 · 40 = 640 points the automatic neighbourhood is at most
+/// N / 40 (a patch of 2.5 % of the surface), never below 8.
+inline constexpr int kSmallCloudPointsPerNeighbour = 40;
+inline constexpr int kMinSmallCloudNeighbours = 8;
 /// A covariance whose middle eigenvalue is below this fraction of the largest is (nearly)
 /// collinear or a single point: its PCA normal is undefined (D-5 degenerate case).
 inline constexpr double kPcaDegenerateRatio = 1e-10;
@@ -161,6 +165,10 @@ inline constexpr std::size_t kMinHandleGroupSize = 5;
 /// D-27: the hop limit of a handle never falls below this on a coarse cloud: the two sides of a
 /// slit one or two triangles long are that close.
 inline constexpr std::size_t kMinHandleHops = 4;
+/// D-29: the loop a handle needs is at most this times sqrt(points the component stands for),
+/// in input spacings: only components of fewer than (2n)² = 1,600 points at n = 20 are affected.
+/// A torus tube of radius r around a circle of radius R is sqrt(r/R)·sqrt(N) spacings around.
+inline constexpr double kSmallSurfaceLoopFraction = 0.5;
 /// Re-expansion (§8.3, §8.4): crossing search extension, round cap, dihedral guard on 1 − cos.
 inline constexpr double kCrossingExtension = 1.11;
 inline constexpr int kCrossingRounds = 100;

@@ -3,11 +3,13 @@
 #include "errors.h"
 #include "hrsr/collapse.h"
 #include "hrsr/fold_repair.h"
+#include "hrsr/unsampled_triangles.h"
 #include "mesh/fans.h"
 #include "mesh/small_holes_fill.h"
 #include "preprocess/components.h"
 #include "preprocess/pca_normals.h"
 #include "preprocess/preprocess.h"
+#include "rsr/candidate_graph.h"
 #include "rsr/reconstruct_cloud.h"
 
 #include <algorithm>
@@ -300,6 +302,11 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     begin_phase(exec, "assembly");
     std::optional<Timer> assembly(std::in_place, report.timings, "assembly");
     collapsed = CollapsedCloud();
+    // D-30: holes in the data that RsR's ears closed on the coarse cloud (where the input's
+    // holes are only a few coarse spacings across) open again.
+    report.unsampled_triangles_removed =
+        remove_unsampled_triangles(fine.triangles, cloud.positions, fine.vertex_node,
+                                   rsr::candidate_rank(pre.k, cloud.size()), exec);
     std::vector<std::uint8_t> dropped_root(cloud.size(), 0);
     for (std::uint32_t node : dropped_nodes) dropped_root[node] = 1;
     for (std::uint32_t node = 0; node < cloud.size(); ++node) {

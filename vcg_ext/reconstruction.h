@@ -43,6 +43,8 @@ struct ReconstructionReport {
     std::vector<std::size_t> handle_hop_limits;
     FoldRepairStats fold_repair;        ///< D-26, on the output mesh
     std::size_t small_holes_filled = 0; ///< D-28: boundary loops of at most 5 edges closed
+    /// D-30 (HRsR): triangles removed for an edge no RsR candidate could be (over a hole).
+    std::size_t unsampled_triangles_removed = 0;
     MeshStats mesh;
     std::vector<std::pair<std::string, double>>
         timings; ///< (phase, seconds), summed over components

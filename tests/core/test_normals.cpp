@@ -93,9 +93,12 @@ TEST(PcaNormals, PlaneGivesItsNormal) {
     for (const Vec3& n : pca.normals) EXPECT_NEAR(std::abs(n[2]), 1.0, 1e-9);
 }
 
-TEST(PcaNormals, AutomaticNeighbourhoodFollowsD5AndD20) {
-    EXPECT_EQ(neighbour_count(100, 0), 16);
-    EXPECT_EQ(neighbour_count(10, 0), 9);
+TEST(PcaNormals, AutomaticNeighbourhoodFollowsD5D20AndD29) {
+    EXPECT_EQ(neighbour_count(1000, 0), 16);
+    EXPECT_EQ(neighbour_count(640, 0), 16); // D-29: N / 40 from here down, never below 8
+    EXPECT_EQ(neighbour_count(500, 0), 12);
+    EXPECT_EQ(neighbour_count(100, 0), 8);
+    EXPECT_EQ(neighbour_count(8, 0), 7); // never more than the other points
     EXPECT_EQ(neighbour_count(100000, 0), 50);
     EXPECT_EQ(neighbour_count(10000000, 0), 192);
     EXPECT_EQ(neighbour_count(100000, 8), 8);

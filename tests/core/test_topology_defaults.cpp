@@ -118,12 +118,21 @@ TEST_P(TopologyAtDefaults, ClosedManifoldOfTheSurfaceGenus) {
 // D-27: n spacings of the input are n hops on the full cloud and n·sqrt(p) hops on a coarse
 // cloud that keeps a fraction p of the points, never fewer than 4.
 TEST(HandleHopLimit, ScalesWithTheSquareRootOfTheCollapseRatio) {
-    EXPECT_EQ(rsr::handle_hop_limit(20, 1000, 1000), 20u);
+    EXPECT_EQ(rsr::handle_hop_limit(20, 4000, 4000), 20u);
     EXPECT_EQ(rsr::handle_hop_limit(20, 1250, 10000), 7u);  // 20 · sqrt(1/8) = 7.07
     EXPECT_EQ(rsr::handle_hop_limit(20, 2500, 10000), 10u); // p = 1/4
     EXPECT_EQ(rsr::handle_hop_limit(50, 5000, 10000), 35u); // 35.36
     EXPECT_EQ(rsr::handle_hop_limit(20, 10, 100000), 4u);   // the floor
-    EXPECT_EQ(rsr::handle_hop_limit(20, 1000, 500), 20u);   // never more than the points: p = 1
+    EXPECT_EQ(rsr::handle_hop_limit(20, 2000, 2000), 20u);
+    EXPECT_EQ(rsr::handle_hop_limit(20, 1000, 500), 16u); // p = 1; D-29: 0.5 · sqrt(1000) = 15.8
+}
+
+// D-29: on a small surface the loop asked for is at most 0.5 · sqrt(points it stands for).
+TEST(HandleHopLimit, IsCappedOnSmallSurfaces) {
+    EXPECT_EQ(rsr::handle_hop_limit(20, 1600, 1600), 20u); // 0.5 · 40: where the cap starts
+    EXPECT_EQ(rsr::handle_hop_limit(20, 315, 315), 9u);    // the eight: 8.87 spacings
+    EXPECT_EQ(rsr::handle_hop_limit(20, 200, 315), 7u);    // 8.87 · sqrt(200 / 315) = 7.07
+    EXPECT_EQ(rsr::handle_hop_limit(20, 50, 50), 4u);      // the floor
 }
 
 const Method kMethods[] = {{"Rsr", 1.0}, {"Half", 0.5}, {"Quarter", 0.25}, {"Eighth", 0.125}};
@@ -209,7 +218,8 @@ INSTANTIATE_TEST_SUITE_P(
                                          Model{"torus_genus1.ply", 1},
                                          Model{"3holes_genus3.ply", 3},
                                          Model{"fertility_genus4.ply", 4},
-                                         Model{"kitten_points_genus1_normals.ply", 1}),
+                                         Model{"kitten_points_genus1_normals.ply", 1},
+                                         Model{"eight_genus2.ply", 2}),
                        ::testing::ValuesIn(kMethods)),
     model_case_name);
 
@@ -243,6 +253,23 @@ INSTANTIATE_TEST_SUITE_P(SharedDataCamelHead, ModelWithBoundaryAtDefaults,
                                             ::testing::Values(Method{"Rsr", 1.0},
                                                               Method{"Half", 0.5})),
                          model_case_name);
+
+// D-30: the shark's four holes stay open with both methods at every p (before, HRsR's ears on
+// the coarse cloud closed one at p = 0.25 and two at p = 0.125).
+class SharkAtDefaults : public ::testing::TestWithParam<Method> {};
+TEST_P(SharkAtDefaults, KeepsItsFourHoles) {
+    MeshStats m;
+    ReconstructionReport report;
+    if (!reconstruct_model({Model{"mech_holes_shark_boundary4.ply", -1}, GetParam()}, m, report))
+        GTEST_SKIP() << "shared data not available";
+    expect_manifold(m);
+    ASSERT_EQ(m.components.size(), 1u);
+    EXPECT_EQ(m.components[0].boundary_loops, 4u);
+    EXPECT_EQ(m.components[0].genus(), 0);
+    EXPECT_GE(report.vertex_reference_ratio, 0.999);
+}
+INSTANTIATE_TEST_SUITE_P(SharedData, SharkAtDefaults, ::testing::ValuesIn(kMethods),
+                         [](const auto& param_info) { return std::string(param_info.param.name); });
 
 class ModelWithBoundaryAtDefaultsKnownFailure : public ModelWithBoundaryAtDefaults {};
 TEST_P(ModelWithBoundaryAtDefaultsKnownFailure, DISABLED_OpenManifoldOfGenusZero) {

@@ -11,8 +11,13 @@ namespace hrsr {
 
 int neighbour_count(std::size_t n, int requested) {
     using namespace constants;
+    // D-29: on a tiny cloud 16 neighbours span a large share of the surface (the 315-point
+    // "eight": a tube 12 spacings around), so the automatic count is also at most n / 40.
+    const std::size_t small_cloud_cap =
+        std::max<std::size_t>(kMinSmallCloudNeighbours, n / kSmallCloudPointsPerNeighbour);
     const std::size_t automatic =
-        std::clamp<std::size_t>(n / kPointsPerNeighbour, kMinNeighbours, kMaxNeighbours);
+        std::min(std::clamp<std::size_t>(n / kPointsPerNeighbour, kMinNeighbours, kMaxNeighbours),
+                 small_cloud_cap);
     const std::size_t wanted = requested > 0 ? std::size_t(requested) : automatic;
     return int(std::min(wanted, n > 0 ? n - 1 : 0));
 }

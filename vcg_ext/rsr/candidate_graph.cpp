@@ -9,14 +9,19 @@
 
 namespace hrsr::rsr {
 
+int candidate_rank(int k, std::size_t points) {
+    k = int(std::min<std::size_t>(std::size_t(k), points > 0 ? points - 1 : 0));
+    // GEL's rank ⌊2k/3⌋ counted from the point itself = the ⌊2k/3⌋-th true neighbour (clamped,
+    // D-8).
+    return std::clamp(k * constants::kPreMaxRankNumerator / constants::kPreMaxRankDenominator, 1,
+                      std::max(k, 1));
+}
+
 CandidateGraph build_candidate_graph(const ComponentCloud& cloud, const KnnIndex& index,
                                      const PreprocessOptions& options, const Execution& exec) {
     const std::size_t n = cloud.smoothed.size();
     const int k = int(std::min<std::size_t>(std::size_t(options.k), n > 0 ? n - 1 : 0));
-    // GEL's rank ⌊2k/3⌋ counted from the point itself = the ⌊2k/3⌋-th true neighbour (clamped,
-    // D-8).
-    const int rank = std::clamp(
-        k * constants::kPreMaxRankNumerator / constants::kPreMaxRankDenominator, 1, std::max(k, 1));
+    const int rank = candidate_rank(options.k, n);
     const double min_cos = normal_filter_cosine(options);
 
     CandidateGraph g;

@@ -16,6 +16,10 @@ struct CandidateGraph {
     std::vector<double> max_length; ///< longest len(i, j) over the edges of i
 };
 
+/// The neighbour rank ⌊2k/3⌋ (at most the points − 1, at least 1) whose distance bounds a
+/// point's candidate edges (§5.1, D-8).
+int candidate_rank(int k, std::size_t points);
+
 /// kNN (k true neighbours) on the smoothed positions, filtered by the normal angle (§3.3).
 CandidateGraph build_candidate_graph(const ComponentCloud& cloud, const KnnIndex& index,
                                      const PreprocessOptions& options, const Execution& exec);

@@ -63,7 +63,12 @@ std::size_t handle_hop_limit(double loop_spacings, std::size_t points,
     const double density = represented_points > points && points > 0
                                ? double(points) / double(represented_points)
                                : 1.0;
-    const double hops = std::round(loop_spacings * std::sqrt(density));
+    // D-29: on a small surface a loop of n spacings may be longer than the surface allows (the
+    // 315-point "eight": tubes 12 spacings around), so the loop asked for is capped at a fraction
+    // of the surface's size in spacings, sqrt(represented points).
+    const double surface_loop = constants::kSmallSurfaceLoopFraction *
+                                std::sqrt(double(std::max(points, represented_points)));
+    const double hops = std::round(std::min(loop_spacings, surface_loop) * std::sqrt(density));
     return std::max(constants::kMinHandleHops, std::size_t(hops));
 }
 

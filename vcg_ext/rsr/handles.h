@@ -24,7 +24,8 @@ struct HandleStats {
 /// D-27: the graph hops that stand for a loop of `loop_spacings` input point spacings on a cloud
 /// of `points` points that stands for `represented_points` input points. A graph hop is about one
 /// point spacing, and spacings grow as 1/sqrt(density): on HRsR's coarse cloud (p = points /
-/// represented) a loop of L input spacings is L · sqrt(p) hops. Never below
+/// represented) a loop of L input spacings is L · sqrt(p) hops. D-29: L is capped at
+/// constants::kSmallSurfaceLoopFraction · sqrt(represented_points) on small surfaces. Never below
 /// constants::kMinHandleHops.
 std::size_t handle_hop_limit(double loop_spacings, std::size_t points,
                              std::size_t represented_points);

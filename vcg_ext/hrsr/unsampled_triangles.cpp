@@ -1,0 +1,182 @@
+#include "hrsr/unsampled_triangles.h"
+
+#include "knn.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace hrsr {
+
+namespace {
+
+// Twice §5.1's bound: HRsR's re-expansion makes longer, thinner triangles than RsR where the
+// sampling is anisotropic (the rocker arm's flat faces reach 1.5 times the bound and were opened
+// at 1.5), while the ears over real holes are longer still (the shark's: up to 3.4 times).
+constexpr double kReachFactor = 2.0;
+// Only vertices whose longest edge is over this many times their shortest are queried, to keep
+// the kNN queries to the few vertices next to a long edge: twice the rank-th neighbour distance
+// is about 7.6 spacings for rank 46, and a vertex's shortest edge is about one spacing.
+constexpr double kScreen = 4.0;
+
+double length(const std::vector<Vec3>& points, std::uint32_t a, std::uint32_t b) {
+    return (points[a] - points[b]).Norm();
+}
+
+/// The triangles around each vertex, and the triangles on an edge found through them.
+class EdgeTriangles {
+public:
+    EdgeTriangles(const std::vector<Triangle>& triangles, std::size_t vertices)
+        : triangles_(triangles), corners_(corners_by_vertex(vertices, triangles)) {}
+    template <class Visit>
+    void on_edge(std::uint32_t a, std::uint32_t b, Visit&& visit) const {
+        for (std::uint32_t i = corners_.begin(a); i < corners_.end(a); ++i) {
+            const std::uint32_t t = corners_.corner[i] / 3;
+            const Triangle& f = triangles_[t];
+            if (f[0] == b || f[1] == b || f[2] == b) visit(t);
+        }
+    }
+    /// v is on a boundary edge of the mesh.
+    bool on_boundary(std::uint32_t v) const {
+        for (std::uint32_t i = corners_.begin(v); i < corners_.end(v); ++i) {
+            const Triangle& f = triangles_[corners_.corner[i] / 3];
+            for (std::uint32_t x : f) {
+                if (x == v) continue;
+                int count = 0;
+                on_edge(v, x, [&](std::uint32_t) { ++count; });
+                if (count == 1) return true;
+            }
+        }
+        return false;
+    }
+
+private:
+    const std::vector<Triangle>& triangles_;
+    VertexCorners corners_;
+};
+
+/// The edge-connected patches of overlong triangles that cover a hole the data has: a disk
+/// (χ = 1) whose every vertex is on its outline (no data point inside) and none on the mesh's
+/// boundary (the hole was closed completely), so removing it opens exactly one new loop and
+/// leaves every vertex in a triangle and manifold (of patches sharing a vertex only the largest
+/// goes). Other overlong triangles
+/// stay: a hole that is still partly open, or a strip joining two pieces, is the data's and RsR's
+/// too.
+std::vector<std::uint8_t> hole_covers(const std::vector<Triangle>& triangles, std::size_t vertices,
+                                      const std::vector<std::uint8_t>& overlong) {
+    const EdgeTriangles edges(triangles, vertices);
+    std::vector<std::uint8_t> remove(triangles.size(), 0), seen(triangles.size(), 0);
+    struct Cover {
+        std::vector<std::uint32_t> triangles, vertices;
+    };
+    std::vector<Cover> covers;
+    std::vector<std::uint32_t> patch, patch_vertices;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> patch_edges;
+    for (std::uint32_t seed = 0; seed < triangles.size(); ++seed) {
+        if (!overlong[seed] || seen[seed]) continue;
+        patch.assign(1, seed);
+        seen[seed] = 1;
+        for (std::size_t i = 0; i < patch.size(); ++i) // breadth-first through shared edges
+            for (int k = 0; k < 3; ++k)
+                edges.on_edge(triangles[patch[i]][k], triangles[patch[i]][(k + 1) % 3],
+                              [&](std::uint32_t t) {
+                                  if (overlong[t] && !seen[t]) {
+                                      seen[t] = 1;
+                                      patch.push_back(t);
+                                  }
+                              });
+        patch_edges.clear();
+        patch_vertices.clear();
+        for (std::uint32_t t : patch)
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+                ++patch_edges[{std::min(a, b), std::max(a, b)}];
+                patch_vertices.push_back(a);
+            }
+        std::sort(patch_vertices.begin(), patch_vertices.end());
+        patch_vertices.erase(std::unique(patch_vertices.begin(), patch_vertices.end()),
+                             patch_vertices.end());
+        std::map<std::uint32_t, int> outline_degree;
+        for (const auto& [edge, count] : patch_edges)
+            if (count == 1) {
+                ++outline_degree[edge.first];
+                ++outline_degree[edge.second];
+            }
+        const long euler =
+            long(patch_vertices.size()) - long(patch_edges.size()) + long(patch.size());
+        bool disk = euler == 1 && outline_degree.size() == patch_vertices.size();
+        for (const auto& [v, degree] : outline_degree) disk = disk && degree == 2;
+        for (std::size_t i = 0; disk && i < patch_vertices.size(); ++i)
+            disk = !edges.on_boundary(patch_vertices[i]);
+        if (disk) covers.push_back({patch, patch_vertices});
+    }
+    // A vertex keeps one fan only if at most one patch around it goes: the largest covers go
+    // first (ties: in order of their first triangle).
+    std::stable_sort(covers.begin(), covers.end(), [](const Cover& a, const Cover& b) {
+        return a.triangles.size() > b.triangles.size();
+    });
+    std::vector<std::uint8_t> in_removed_patch(vertices, 0);
+    for (const Cover& c : covers) {
+        if (std::any_of(c.vertices.begin(), c.vertices.end(),
+                        [&](std::uint32_t v) { return in_removed_patch[v] != 0; }))
+            continue;
+        for (std::uint32_t t : c.triangles) remove[t] = 1;
+        for (std::uint32_t v : c.vertices) in_removed_patch[v] = 1;
+    }
+    return remove;
+}
+
+} // namespace
+
+std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
+                                       const std::vector<Vec3>& points,
+                                       const std::vector<std::uint32_t>& vertex_point, int rank,
+                                       const Execution& exec) {
+    const std::size_t vertices = vertex_point.size();
+    std::vector<double> shortest(vertices, std::numeric_limits<double>::infinity());
+    std::vector<double> longest(vertices, 0);
+    for (const Triangle& t : triangles)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+            const double l = length(points, vertex_point[a], vertex_point[b]);
+            for (std::uint32_t v : {a, b}) {
+                shortest[v] = std::min(shortest[v], l);
+                longest[v] = std::max(longest[v], l);
+            }
+        }
+    std::vector<std::uint32_t> queried;
+    for (std::uint32_t v = 0; v < vertices; ++v)
+        if (longest[v] > kScreen * shortest[v]) queried.push_back(v);
+    if (queried.empty()) return 0;
+
+    // reach[v]: kReachFactor times the rank-th neighbour distance of v's point (infinite where
+    // not queried).
+    std::vector<double> reach(vertices, std::numeric_limits<double>::infinity());
+    const KnnIndex index(points);
+    parallel_for(exec, queried.size(), [&](std::size_t i) {
+        thread_local std::vector<Neighbour> found;
+        const std::uint32_t v = queried[i];
+        index.neighbours_of(vertex_point[v], rank, found);
+        if (int(found.size()) == rank)
+            reach[v] = kReachFactor * std::sqrt(found.back().squared_distance);
+    });
+    std::vector<std::uint8_t> overlong(triangles.size(), 0);
+    bool any = false;
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        for (int k = 0; k < 3 && !overlong[t]; ++k) {
+            const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+            const double l = length(points, vertex_point[a], vertex_point[b]);
+            if (l > reach[a] || l > reach[b]) overlong[t] = any = true;
+        }
+    if (!any) return 0;
+    const std::vector<std::uint8_t> remove = hole_covers(triangles, vertices, overlong);
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        if (!remove[t]) triangles[kept++] = triangles[t];
+    const std::size_t removed = triangles.size() - kept;
+    triangles.resize(kept);
+    return removed;
+}
+
+} // namespace hrsr
