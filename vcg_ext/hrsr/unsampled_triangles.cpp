@@ -1,6 +1,7 @@
 #include "hrsr/unsampled_triangles.h"
 
 #include "knn.h"
+#include "mesh/small_holes_fill.h"
 
 #include <algorithm>
 #include <cmath>
@@ -105,7 +106,11 @@ std::vector<std::uint8_t> hole_covers(const std::vector<Triangle>& triangles, st
             }
         const long euler =
             long(patch_vertices.size()) - long(patch_edges.size()) + long(patch.size());
-        bool disk = euler == 1 && outline_degree.size() == patch_vertices.size();
+        // A loop of at most five points is a gap in the sampling, not a hole in the data (D-28):
+        // such a cover stays (opening it left a 4-gon that no fan closes without a fold on the
+        // graded triple torus).
+        bool disk = euler == 1 && outline_degree.size() == patch_vertices.size() &&
+                    outline_degree.size() > kMaxFilledLoop;
         for (const auto& [v, degree] : outline_degree) disk = disk && degree == 2;
         for (std::size_t i = 0; disk && i < patch_vertices.size(); ++i)
             disk = !edges.on_boundary(patch_vertices[i]);

@@ -15,8 +15,9 @@ namespace hrsr {
 /// one of its edges is more than twice as long as the distance from either end to its `rank`-th
 /// nearest neighbour among `points` (§5.1 bounds RsR's candidate edges by that distance, so RsR
 /// on the full cloud never makes such an edge). An edge-connected patch of overlong triangles
-/// is removed when it is a disk whose every vertex lies on its outline (no point inside) and
-/// none on the mesh's boundary: one new boundary loop, every vertex kept and manifold. Vertex v
+/// is removed when it is a disk whose every vertex lies on its outline (no point inside), none
+/// on the mesh's boundary, with more than kMaxFilledLoop vertices (D-28 closes smaller loops):
+/// one new boundary loop, every vertex kept and manifold. Vertex v
 /// lies at points[vertex_point[v]]. Returns the number of triangles removed; the others keep
 /// their order. Deterministic.
 std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
