@@ -13,15 +13,8 @@ ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 DEST="$ROOT/.deps/meshlab-2022.02"
 [ -f "$DEST/src/common/plugins/interfaces/filter_plugin.h" ] && exit 0
 
-mirror() { # the Debian mirror of the system's bookworm entry (deb822 or one-line format)
-  local f=/etc/apt/sources.list.d/debian.sources
-  if [ -f "$f" ]; then
-    awk '/^URIs:/{u=$2} /^Suites:.*bookworm( |$)/{print u; exit}' "$f"
-  else
-    awk '$1=="deb" && $3 ~ /^bookworm$/ {print $2; exit}' /etc/apt/sources.list 2>/dev/null
-  fi
-}
-URI=$(mirror)
+source "$ROOT/scripts/debian_mirror.sh"
+URI=$(debian_mirror)
 [ -n "$URI" ] || { echo "fetch_meshlab_2022.sh: no Debian bookworm entry in the apt sources" >&2; exit 1; }
 
 APT="$ROOT/.deps/apt-trixie"
