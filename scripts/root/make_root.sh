@@ -12,9 +12,8 @@ SUITE=$1
 R="$ROOT/.deps/roots/$SUITE"
 # what the plugin and the host program build against, and xvfb for the GUI screenshots
 PACKAGES=(meshlab g++ cmake ninja-build make qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev
-          libglew-dev libeigen3-dev xz-utils dpkg-dev xvfb xauth xdotool imagemagick
-          # libraries of MeshLab's own plugins that the package only recommends
-          lib3ds-1-3 libmuparser2v5 libopenctm1 libqhull-r8.0)
+          libglew-dev libeigen3-dev xz-utils dpkg-dev xvfb xauth xdotool imagemagick)
+MARKER="${PACKAGES[*]} and the recommended libraries"  # changes when what is installed does
 source "$ROOT/scripts/debian_mirror.sh"
 export DEBIAN_FRONTEND=noninteractive
 
@@ -47,21 +46,13 @@ SRC
   touch "$R/.debootstrap-done"
 fi
 
-# the marker holds the package list, so that a changed list is installed into an existing root
-if [ "$(cat "$R/.packages-done" 2>/dev/null)" != "${PACKAGES[*]}" ] ||
+if [ "$(cat "$R/.packages-done" 2>/dev/null)" != "$MARKER" ] ||
    [ ! -f "$R/meshlab-src/ML_VERSION" ]; then
-  bash "$HERE/in_root.sh" "$R" sh -ec "
-    apt-get update -qq
-    apt-get install -y -qq --no-install-recommends ${PACKAGES[*]} >/dev/null
-    rm -rf /meshlab-src /tmp/src && mkdir /tmp/src && cd /tmp/src
-    apt-get source --tar-only -qq meshlab 2>/dev/null
-    mkdir /meshlab-src
-    tar xJf meshlab_*.orig.tar.xz -C /meshlab-src --strip-components=1 \
-        --wildcards '*/ML_VERSION' '*/src/common/*' '*/src/vcglib/*'
-    rm -rf /tmp/src /var/cache/apt/archives/*.deb" || {
+  cp "$HERE/install_packages.sh" "$R/tmp/"
+  bash "$HERE/in_root.sh" "$R" sh /tmp/install_packages.sh "${PACKAGES[@]}" || {
     echo "make_root.sh: FAILED: installing MeshLab and build tools in the $SUITE root from $URI" >&2
     exit 1; }
-  echo "${PACKAGES[*]}" > "$R/.packages-done"
+  echo "$MARKER" > "$R/.packages-done"
 fi
 echo "make_root.sh: $SUITE root ready: MeshLab $(cat "$R/meshlab-src/ML_VERSION")," \
      "package $(chroot "$R" dpkg-query -W -f='${Version}' meshlab)"
