@@ -1,8 +1,10 @@
 // Checks shared by the plugin tests of every MeshLab version: the mesh bit for bit, its
-// manifoldness, and the filter's log against the CLI's JSON report.
+// manifoldness, the filter's log against the CLI's JSON report, and the test clouds.
 #pragma once
 
 #include "cli_runner.h"
+#include "io/ply_writer.h"
+#include "io/point_set_reader.h"
 #include "mesh/mesh_stats.h"
 #include "ply_faces.h"
 
@@ -10,10 +12,28 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace hrsr::testing {
+
+/// A default as the filter shows it (QString::number's shortest form, as iostream writes it).
+inline std::string default_text(double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+}
+
+/// Writes the sample with `outliers` points in a far cluster (smaller than a component may be,
+/// so they are dropped) to `file`, and returns that cloud.
+inline PointSet write_sample_with_far_outliers(const std::string& file, std::size_t outliers) {
+    PointSet cloud = io::read_point_set(HRSR_SAMPLE);
+    for (std::size_t i = 0; i < outliers; ++i)
+        cloud.positions.emplace_back(1e4 + double(i % 5), 1e4 + double(i / 5), 1e4);
+    io::write_ply(file, cloud.positions, {}, {}, cloud.precision);
+    return cloud;
+}
 
 /// What follows "end_header\n": vertices and faces, bit for bit.
 inline std::string ply_body(const std::string& file) {

@@ -26,6 +26,7 @@
 namespace hrsr {
 namespace {
 
+using testing::default_text;
 using testing::expect_log_matches_report;
 using testing::expect_manifold_mesh;
 using testing::Outcome;
@@ -67,22 +68,18 @@ TEST_F(MeshLabFilter, DumpListsEveryParameterWithUnitAndDefault) {
     const std::string section = dump.substr(at, dump.find("\\section", at) - at);
 
     const ReconstructionOptions d;
-    auto text = [](double x) {
-        std::ostringstream s;
-        s << x;
-        return s.str();
-    };
     // label, unit, default: every parameter, defaults as the core's options header has them
     const std::vector<std::array<std::string, 3>> expected{
-        {"k (neighbours)", "points", text(d.rsr.preprocess.k)},
-        {"Collapse ratio p", "fraction of the points", text(d.collapse.collapse_ratio)},
-        {"l_min (level of detail)", "length in model units", text(d.reexpand.l_min)},
-        {"Handles", "count", text(d.rsr.handles)},
+        {"k (neighbours)", "points", default_text(d.rsr.preprocess.k)},
+        {"Collapse ratio p", "fraction of the points", default_text(d.collapse.collapse_ratio)},
+        {"l_min (level of detail)", "length in model units", default_text(d.reexpand.l_min)},
+        {"Handles", "count", default_text(d.rsr.handles)},
         {"Method", "choice", "HRsR"},
-        {"Collapse neighbours", "points", text(d.collapse.collapse_k)},
-        {"θ (normal angle)", "degrees", text(d.rsr.preprocess.theta_degrees)},
-        {"r (outlier cut)", "multiple of the mean neighbour distance", text(d.rsr.preprocess.r)},
-        {"n (shortest handle)", "point spacings", text(int(d.rsr.min_handle_loop))},
+        {"Collapse neighbours", "points", default_text(d.collapse.collapse_k)},
+        {"θ (normal angle)", "degrees", default_text(d.rsr.preprocess.theta_degrees)},
+        {"r (outlier cut)", "multiple of the mean neighbour distance",
+         default_text(d.rsr.preprocess.r)},
+        {"n (shortest handle)", "point spacings", default_text(int(d.rsr.min_handle_loop))},
         {"Distance", "choice", "Tangent"},
         {"Normals", "choice", "Use the layer's normals"},
         {"Select dropped points", "on/off", "off"}};
@@ -183,11 +180,8 @@ TEST_F(MeshLabFilter, DeletedVerticesAreIgnored) {
 }
 
 TEST_F(MeshLabFilter, SelectDroppedSelectsExactlyThePointsNotInTheMesh) {
-    PointSet cloud = io::read_point_set(HRSR_SAMPLE);
-    const std::size_t outliers = 30; // a far cluster smaller than a component may be: dropped
-    for (std::size_t i = 0; i < outliers; ++i)
-        cloud.positions.emplace_back(1e4 + double(i % 5), 1e4 + double(i / 5), 1e4);
-    io::write_ply(path("cloud.ply"), cloud.positions, {}, {}, cloud.precision);
+    const std::size_t outliers = 30;
+    const PointSet cloud = testing::write_sample_with_far_outliers(path("cloud.ply"), outliers);
     // reconstruct with select_dropped, then delete the selection in the input layer (layer 0)
     const std::string script =
         testing::mlx(testing::hrsr_filter({{"select_dropped", "true"}}) +

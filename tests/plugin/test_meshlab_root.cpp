@@ -21,14 +21,8 @@
 #include <string>
 #include <vector>
 
-namespace hrsr {
+namespace hrsr::testing {
 namespace {
-
-using testing::expect_log_matches_report;
-using testing::expect_manifold_mesh;
-using testing::Outcome;
-using testing::ply_body;
-using testing::slurp;
 
 class MeshLabRootFilter : public ::testing::Test {
 protected:
@@ -60,22 +54,18 @@ TEST_F(MeshLabRootFilter, ListsEveryParameterWithItsDefault) {
     const Outcome r = root_.host("--list");
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
     const ReconstructionOptions d;
-    auto text = [](double x) {
-        std::ostringstream s;
-        s << x;
-        return s.str();
-    };
     // name, type, default (an enum's as its text), label: the core's defaults, in dialog order
     const std::vector<std::array<std::string, 4>> expected{
-        {"k", "RichInt", text(d.rsr.preprocess.k), "k (neighbours)"},
-        {"collapse_ratio", "RichDynamicFloat", text(d.collapse.collapse_ratio), "Collapse ratio p"},
-        {"l_min", "RichAbsPerc", text(d.reexpand.l_min), "l_min (level of detail)"},
-        {"handles", "RichInt", text(d.rsr.handles), "Handles"},
+        {"k", "RichInt", default_text(d.rsr.preprocess.k), "k (neighbours)"},
+        {"collapse_ratio", "RichDynamicFloat", default_text(d.collapse.collapse_ratio),
+         "Collapse ratio p"},
+        {"l_min", "RichAbsPerc", default_text(d.reexpand.l_min), "l_min (level of detail)"},
+        {"handles", "RichInt", default_text(d.rsr.handles), "Handles"},
         {"method", "RichEnum", "HRsR (collapse, RsR, re-expansion)", "Method"},
-        {"collapse_k", "RichInt", text(d.collapse.collapse_k), "Collapse neighbours"},
-        {"theta", "RichFloat", text(d.rsr.preprocess.theta_degrees), "θ (normal angle)"},
-        {"r", "RichFloat", text(d.rsr.preprocess.r), "r (outlier cut)"},
-        {"n", "RichInt", text(double(d.rsr.min_handle_loop)), "n (shortest handle)"},
+        {"collapse_k", "RichInt", default_text(d.collapse.collapse_k), "Collapse neighbours"},
+        {"theta", "RichFloat", default_text(d.rsr.preprocess.theta_degrees), "θ (normal angle)"},
+        {"r", "RichFloat", default_text(d.rsr.preprocess.r), "r (outlier cut)"},
+        {"n", "RichInt", default_text(double(d.rsr.min_handle_loop)), "n (shortest handle)"},
         {"distance", "RichEnum", "Tangent (smooths along normals)", "Distance"},
         {"normals", "RichEnum", "Use the layer's normals (estimate if missing or unusable)",
          "Normals"},
@@ -150,11 +140,8 @@ TEST_F(MeshLabRootFilter, BadInputFailsWithTheReason) {
 }
 
 TEST_F(MeshLabRootFilter, SelectDroppedSelectsExactlyThePointsNotInTheMesh) {
-    PointSet cloud = io::read_point_set(HRSR_SAMPLE);
-    const std::size_t outliers = 30; // a far cluster smaller than a component may be: dropped
-    for (std::size_t i = 0; i < outliers; ++i)
-        cloud.positions.emplace_back(1e4 + double(i % 5), 1e4 + double(i / 5), 1e4);
-    io::write_ply(path("cloud.ply"), cloud.positions, {}, {}, cloud.precision);
+    const std::size_t outliers = 30;
+    const PointSet cloud = testing::write_sample_with_far_outliers(path("cloud.ply"), outliers);
     const Outcome r =
         apply("cloud.ply", "select_dropped=true --selected " + inside("selected.txt"));
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -196,4 +183,4 @@ TEST_F(MeshLabRootFilter, InstallPutsThePluginWhereThisMeshLabLoadsIt) {
 }
 
 } // namespace
-} // namespace hrsr
+} // namespace hrsr::testing
