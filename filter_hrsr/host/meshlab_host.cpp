@@ -1,6 +1,7 @@
 // A PyMeshLab-like host for MeshLab 2022.02 and later (which have no meshlabserver): the plugin
 // manager of libmeshlab-common loads MeshLab's own plugins and ours, a mesh is opened, a filter is
 // applied by name with parameters and a real progress callback, and the result is saved.
+// FILTER is the filter's name in MeshLab's menu or its PyMeshLab name.
 //   meshlab_host PLUGIN|- FILTER --list                   every parameter: name, type, default
 //   meshlab_host PLUGIN|- FILTER IN OUT [--selected FILE] [name=value ...]
 // PLUGIN "-" uses only the installed plugins (after `cmake --install`). OUT gets the current
@@ -20,6 +21,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -34,6 +36,15 @@ bool progress(const int percent, const char* phase) {
     return true;
 }
 
+/// The filter called `name` in MeshLab's menu or, as PyMeshLab calls it, by its Python name.
+std::pair<FilterPlugin*, QAction*> find_filter(PluginManager& pm, const QString& name) {
+    for (FilterPlugin* filter : pm.filterPluginIterator())
+        for (QAction* action : filter->actions())
+            if (filter->filterName(action) == name || filter->pythonFilterName(action) == name)
+                return {filter, action};
+    throw MLException("no filter named " + name);
+}
+
 void run(const QStringList& args) {
     if (args.size() < 3) throw MLException("usage: meshlab_host PLUGIN|- FILTER --list | IN OUT");
     PluginManager& pm = meshlab::pluginManagerInstance();
@@ -43,9 +54,7 @@ void run(const QStringList& args) {
         std::cerr << "warning: " << e.what() << "\n";
     }
     if (args[0] != "-") pm.loadPlugin(args[0]); // throws with the reason when refused
-    QAction* action = pm.filterAction(args[1]);
-    FilterPlugin* filter = action ? pm.getFilterPluginFromAction(action) : nullptr;
-    if (filter == nullptr) throw MLException("no filter named " + args[1]);
+    auto [filter, action] = find_filter(pm, args[1]);
 
     MeshDocument md;
     if (args[2] == "--list") {

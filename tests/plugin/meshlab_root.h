@@ -42,10 +42,11 @@ public:
                             args, path(""));
     }
     /// meshlab_host with the plugin built in the root ("-": only the installed plugins) and the
-    /// filter "Surface Reconstruction: HRsR"; `args` as meshlab_host takes them.
-    Outcome host(const std::string& args, const std::string& plugin = kPlugin) const {
-        return run("/hrsr/build/filter_hrsr/host/meshlab_host",
-                   plugin + " 'Surface Reconstruction: HRsR' " + args);
+    /// filter "Surface Reconstruction: HRsR" (or its PyMeshLab name); `args` as meshlab_host
+    /// takes them.
+    Outcome host(const std::string& args, const std::string& plugin = kPlugin,
+                 const std::string& filter = "'Surface Reconstruction: HRsR'") const {
+        return run("/hrsr/build/filter_hrsr/host/meshlab_host", plugin + " " + filter + " " + args);
     }
     static constexpr const char* kPlugin = "/hrsr/build/filter_hrsr/libfilter_hrsr.so";
 

@@ -76,6 +76,15 @@ TEST_F(MeshLabRootFilter, ListsEveryParameterWithItsDefault) {
     EXPECT_EQ(r.out, lines);
 }
 
+TEST_F(MeshLabRootFilter, PyMeshLabNameIsTheSameFilter) {
+    const Outcome menu = root_.host("--list");
+    const Outcome python =
+        root_.host("--list", testing::MeshLabRoot::kPlugin, "generate_surface_reconstruction_hrsr");
+    ASSERT_EQ(python.exit_code, 0) << python.err;
+    EXPECT_EQ(python.out, menu.out);
+    EXPECT_FALSE(python.out.empty());
+}
+
 TEST_F(MeshLabRootFilter, SampleGivesTheCliMeshWithProgressPerPhase) {
     std::filesystem::copy_file(HRSR_SAMPLE, path("owl.ply"));
     const Outcome r = apply("owl.ply");
