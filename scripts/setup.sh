@@ -72,6 +72,3 @@ if [ ! -e "$DEPS/meshlab-src/vcglib/vcg" ] && [ ! -e "$DEPS/meshlab-src/src/vcgl
   ln -sfn "meshlab-$UP" "$DEPS/meshlab-src"
 fi
 echo "setup.sh: MeshLab source at .deps/meshlab-src ($(cat "$DEPS/meshlab-src/ML_VERSION" 2>/dev/null || echo '?'))"
-
-# MeshLab 2022.02 plugin headers (Debian trixie's source tarball) for the compile-only API check.
-bash "$ROOT/scripts/fetch_meshlab_2022.sh"

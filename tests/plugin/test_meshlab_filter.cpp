@@ -3,6 +3,7 @@
 // layer with faces and on a layer with deleted vertices; dropped points selected; progress per
 // phase; the comparison script; `cmake --install` to where MeshLab loads plugins.
 #include "cli_runner.h"
+#include "filter_checks.h"
 #include "io/ply_writer.h"
 #include "io/point_set_reader.h"
 #include "mesh/mesh_stats.h"
@@ -25,7 +26,11 @@
 namespace hrsr {
 namespace {
 
+using testing::default_text;
+using testing::expect_log_matches_report;
+using testing::expect_manifold_mesh;
 using testing::Outcome;
+using testing::ply_body;
 using testing::slurp;
 
 class MeshLabFilter : public ::testing::Test {
@@ -54,39 +59,6 @@ protected:
     testing::MeshLabServer server_{folder_.root().string(), HRSR_PLUGIN};
 };
 
-/// What follows "end_header\n": vertices and faces, bit for bit.
-std::string ply_body(const std::string& file) {
-    const std::string bytes = slurp(file);
-    const std::size_t end = bytes.find("end_header\n");
-    return end == std::string::npos ? "" : bytes.substr(end + 11);
-}
-
-/// The saved mesh is edge- and vertex-manifold, without degenerate faces, and has faces.
-void expect_manifold_mesh(const std::string& file) {
-    std::size_t vertices = 0;
-    std::vector<Triangle> triangles;
-    ASSERT_TRUE(testing::read_ply_faces(slurp(file), vertices, triangles)) << file;
-    const MeshStats m = measure_mesh(vertices, triangles);
-    EXPECT_GT(m.faces, 0u);
-    EXPECT_EQ(m.non_manifold_edges, 0u);
-    EXPECT_EQ(m.non_manifold_vertices, 0u);
-    EXPECT_EQ(m.degenerate_faces, 0u);
-}
-
-/// "r_v = 99.1234 %" and "genus of closed ones: 1, 0" of the filter's log, as the CLI's report
-/// gives them.
-void expect_log_matches_report(const std::string& log, const nlohmann::json& report) {
-    char r_v[32];
-    std::snprintf(r_v, sizeof r_v, "r_v = %.4f %%",
-                  100.0 * report.at("points").at("vertex_reference_ratio").get<double>());
-    EXPECT_NE(log.find(r_v), std::string::npos) << r_v << " not in\n" << log;
-    std::string genus;
-    for (const auto& g : report.at("mesh").at("genus_of_closed_components"))
-        genus += (genus.empty() ? "" : ", ") + std::to_string(g.get<long>());
-    const std::string expected = "genus of closed ones: " + (genus.empty() ? "none" : genus) + ")";
-    EXPECT_NE(log.find(expected), std::string::npos) << expected << " not in\n" << log;
-}
-
 TEST_F(MeshLabFilter, DumpListsEveryParameterWithUnitAndDefault) {
     const Outcome r = server_.run("-d " + path("filters.txt"));
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -96,22 +68,18 @@ TEST_F(MeshLabFilter, DumpListsEveryParameterWithUnitAndDefault) {
     const std::string section = dump.substr(at, dump.find("\\section", at) - at);
 
     const ReconstructionOptions d;
-    auto text = [](double x) {
-        std::ostringstream s;
-        s << x;
-        return s.str();
-    };
     // label, unit, default: every parameter, defaults as the core's options header has them
     const std::vector<std::array<std::string, 3>> expected{
-        {"k (neighbours)", "points", text(d.rsr.preprocess.k)},
-        {"Collapse ratio p", "fraction of the points", text(d.collapse.collapse_ratio)},
-        {"l_min (level of detail)", "length in model units", text(d.reexpand.l_min)},
-        {"Handles", "count", text(d.rsr.handles)},
+        {"k (neighbours)", "points", default_text(d.rsr.preprocess.k)},
+        {"Collapse ratio p", "fraction of the points", default_text(d.collapse.collapse_ratio)},
+        {"l_min (level of detail)", "length in model units", default_text(d.reexpand.l_min)},
+        {"Handles", "count", default_text(d.rsr.handles)},
         {"Method", "choice", "HRsR"},
-        {"Collapse neighbours", "points", text(d.collapse.collapse_k)},
-        {"θ (normal angle)", "degrees", text(d.rsr.preprocess.theta_degrees)},
-        {"r (outlier cut)", "multiple of the mean neighbour distance", text(d.rsr.preprocess.r)},
-        {"n (shortest handle)", "point spacings", text(int(d.rsr.min_handle_loop))},
+        {"Collapse neighbours", "points", default_text(d.collapse.collapse_k)},
+        {"θ (normal angle)", "degrees", default_text(d.rsr.preprocess.theta_degrees)},
+        {"r (outlier cut)", "multiple of the mean neighbour distance",
+         default_text(d.rsr.preprocess.r)},
+        {"n (shortest handle)", "point spacings", default_text(int(d.rsr.min_handle_loop))},
         {"Distance", "choice", "Tangent"},
         {"Normals", "choice", "Use the layer's normals"},
         {"Select dropped points", "on/off", "off"}};
@@ -212,11 +180,8 @@ TEST_F(MeshLabFilter, DeletedVerticesAreIgnored) {
 }
 
 TEST_F(MeshLabFilter, SelectDroppedSelectsExactlyThePointsNotInTheMesh) {
-    PointSet cloud = io::read_point_set(HRSR_SAMPLE);
-    const std::size_t outliers = 30; // a far cluster smaller than a component may be: dropped
-    for (std::size_t i = 0; i < outliers; ++i)
-        cloud.positions.emplace_back(1e4 + double(i % 5), 1e4 + double(i / 5), 1e4);
-    io::write_ply(path("cloud.ply"), cloud.positions, {}, {}, cloud.precision);
+    const std::size_t outliers = 30;
+    const PointSet cloud = testing::write_sample_with_far_outliers(path("cloud.ply"), outliers);
     // reconstruct with select_dropped, then delete the selection in the input layer (layer 0)
     const std::string script =
         testing::mlx(testing::hrsr_filter({{"select_dropped", "true"}}) +
