@@ -74,11 +74,11 @@ private:
     std::string data_;
 };
 
-using StreamReader = PointSet (*)(std::istream&, const std::string&);
+using StreamReader = PointSet (*)(std::istream&, const std::string&, const ReadOptions&);
 
 PointSet read_bytes(StreamReader read, const std::string& bytes, const std::string& name) {
     std::istringstream in(bytes, std::ios::binary);
-    return read(in, name);
+    return read(in, name, ReadOptions{});
 }
 
 PointSet ply(const std::string& bytes) {

@@ -12,7 +12,7 @@
 namespace hrsr::io {
 namespace {
 
-using Reader = PointSet (*)(std::istream&, const std::string&);
+using Reader = PointSet (*)(std::istream&, const std::string&, const ReadOptions&);
 
 Reader reader_for(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
@@ -28,7 +28,7 @@ Reader reader_for(const std::string& path) {
 
 } // namespace
 
-PointSet read_point_set(const std::string& path) {
+PointSet read_point_set(const std::string& path, const ReadOptions& options) {
     return detail::guarded_read(path, [&] {
         std::error_code ec;
         if (std::filesystem::is_directory(path, ec)) {
@@ -41,7 +41,7 @@ PointSet read_point_set(const std::string& path) {
             detail::fail(path, std::string("cannot open: ") +
                                    (errno != 0 ? std::strerror(errno) : "unknown error"));
         }
-        return read(in, path);
+        return read(in, path, options);
     });
 }
 
