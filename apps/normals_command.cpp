@@ -20,7 +20,8 @@ CLI::App* add_normals_command(CLI::App& app, NormalsArguments& a) {
                    "Drops non-finite points, merges exact duplicates, estimates normals where the\n"
                    "input has none (PCA + MST orientation), removes small far-away clusters, and\n"
                    "writes the kept points at their input coordinates as binary PLY.");
-    c->add_option("input", a.input, "Point cloud: .ply (ascii/binary), .xyz/.txt, .obj")
+    c->add_option("input", a.input,
+                  "Point cloud: .ply (ascii/binary), .xyz/.txt, .obj, .pts, .pcd, .las/.laz")
         ->required(); // existence is checked by the reader: a missing file is bad input (exit 1)
     c->add_option("-o,--output", a.output,
                   "Output PLY (binary, with normals and the points' attributes)")

@@ -24,8 +24,8 @@ CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& a) {
         "it to a fraction of its points, runs Rotation System Reconstruction on them and\n"
         "replays the collapses as vertex splits; RsR runs on the full cloud.");
     c->add_option("input", a.inputs,
-                  "Point cloud(s): .ply (ascii/binary), .xyz/.txt, .obj; several files are read\n"
-                  "as one cloud (tiles) and must have the same fields")
+                  "Point cloud(s): .ply (ascii/binary), .xyz/.txt, .obj, .pts, .pcd, .las/.laz;\n"
+                  "several files are read as one cloud (tiles) and must have the same fields")
         ->required();
     c->add_option("-o,--output", a.output,
                   "Output mesh (binary PLY with vertex normals and the points' attributes)")

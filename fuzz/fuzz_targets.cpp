@@ -52,6 +52,15 @@ void read_xyz_bytes(const std::uint8_t* data, std::size_t size) {
 void read_obj_bytes(const std::uint8_t* data, std::size_t size) {
     read_with(io::read_obj, data, size);
 }
+void read_pts_bytes(const std::uint8_t* data, std::size_t size) {
+    read_with(io::read_pts, data, size);
+}
+void read_pcd_bytes(const std::uint8_t* data, std::size_t size) {
+    read_with(io::read_pcd, data, size);
+}
+void read_las_bytes(const std::uint8_t* data, std::size_t size) {
+    read_with(io::read_las, data, size);
+}
 
 void reconstruct_bytes(const std::uint8_t* data, std::size_t size) {
     if (size < 1) return;

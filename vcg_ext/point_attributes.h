@@ -30,6 +30,9 @@ const char* ply_type_name(ScalarType type);
 /// True if `value` is exactly representable in `type` (integers: integral and in range).
 bool fits(ScalarType type, double value);
 
+/// The value stored at `host_order` (size_of(type) bytes in host byte order), exactly.
+double load_value(ScalarType type, const unsigned char* host_order);
+
 /// One named value per point, as bytes in host byte order (size_of(type) per point): a column
 /// of uchar colours costs one byte per point, not a double.
 struct PointAttribute {

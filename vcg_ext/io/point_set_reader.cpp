@@ -21,9 +21,12 @@ Reader reader_for(const std::string& path) {
     if (ext == ".ply") return read_ply;
     if (ext == ".xyz" || ext == ".txt") return read_xyz;
     if (ext == ".obj") return read_obj;
+    if (ext == ".pts") return read_pts;
+    if (ext == ".pcd") return read_pcd;
+    if (ext == ".las" || ext == ".laz") return read_las;
     detail::fail(path, (ext.empty() ? std::string("no file extension")
                                     : "unknown file extension " + detail::quote(ext)) +
-                           " (supported: .ply, .xyz, .txt, .obj)");
+                           " (supported: .ply, .xyz, .txt, .obj, .pts, .pcd, .las, .laz)");
 }
 
 } // namespace
