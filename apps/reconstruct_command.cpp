@@ -2,7 +2,7 @@
 
 #include "command_line.h"
 #include "errors.h"
-#include "io/ply_writer.h"
+#include "io/mesh_writer.h"
 #include "io/point_set_reader.h"
 #include "mesh_summary.h"
 #include "process_stats.h"
@@ -28,8 +28,10 @@ CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& a) {
                   "several files are read as one cloud (tiles) and must have the same fields")
         ->required();
     c->add_option("-o,--output", a.output,
-                  "Output mesh (binary PLY with vertex normals and the points' attributes)")
+                  "Output mesh, format by extension: .ply (binary; every attribute), .obj, .off\n"
+                  "(positions, normals in .obj, colour)")
         ->required();
+    c->add_flag("--ascii", a.ascii, "Write the .ply output as ascii text");
     add_no_attributes_flag(*c, a.attributes);
     c->add_option("--method", a.method,
                   "hrsr (collapse, RsR, re-expansion) or rsr (RsR on all points)")
@@ -243,6 +245,7 @@ void run_reconstruct(const ReconstructArguments& args) {
     a.options.method = a.method == "rsr" ? Method::Rsr : Method::Hrsr;
     parse_l_min(a.l_min, a.options);
     for (const std::string& in : a.inputs) check_outputs(in, a.output, a.report);
+    io::mesh_format_of(a.output); // an unknown extension is refused before any work
     validate(a.options);
     const PointSet input = io::read_point_sets(a.inputs, {a.attributes});
 
@@ -259,8 +262,10 @@ void run_reconstruct(const ReconstructArguments& args) {
     for (std::uint32_t i : mesh.vertex_input_index) positions.push_back(input.positions[i]);
     // Copies made at non-manifold vertices share their point's index, so they get its values
     // too; a merged duplicate is represented by its first occurrence (D-3).
-    io::write_ply(a.output, positions, mesh.vertex_normals, mesh.triangles, input.precision,
-                  gather(input.attributes, mesh.vertex_input_index));
+    const std::vector<std::string> left_out =
+        io::write_mesh(a.output, positions, mesh.vertex_normals, mesh.triangles, input.precision,
+                       gather(input.attributes, mesh.vertex_input_index), {a.ascii});
+    for (const std::string& w : left_out) std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
 
     for (const std::string& w : input.warnings)
         std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());

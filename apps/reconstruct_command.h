@@ -20,6 +20,7 @@ struct ReconstructArguments {
     int threads = 0;
     bool quiet = false;
     bool attributes = true; ///< carry the points' colour and other values to the vertices
+    bool ascii = false;     ///< ascii PLY output
 };
 
 CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& args);

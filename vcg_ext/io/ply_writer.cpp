@@ -80,9 +80,11 @@ void validate_attributes(const std::vector<Vec3>& positions,
     }
 }
 
-void validate(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
-              const std::vector<Triangle>& triangles,
-              const std::vector<PointAttribute>& attributes) {
+} // namespace
+
+void validate_ply_data(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+                       const std::vector<Triangle>& triangles,
+                       const std::vector<PointAttribute>& attributes) {
     validate_attributes(positions, attributes);
     if (!normals.empty() && normals.size() != positions.size()) {
         throw std::invalid_argument("write_ply: " + std::to_string(normals.size()) +
@@ -104,11 +106,12 @@ void validate(const std::vector<Vec3>& positions, const std::vector<Vec3>& norma
     }
 }
 
-std::string header(std::size_t vertices, bool normals, std::size_t triangles,
-                   CoordinatePrecision precision, const std::vector<PointAttribute>& attributes) {
+std::string ply_header(const std::string& format, std::size_t vertices, bool normals,
+                       std::size_t triangles, CoordinatePrecision precision,
+                       const std::vector<PointAttribute>& attributes) {
     const char* const type = precision == CoordinatePrecision::Float ? "float" : "double";
     std::ostringstream h;
-    h << "ply\nformat binary_little_endian 1.0\ncomment written by hrsr " << HRSR_VERSION << "\n"
+    h << "ply\nformat " << format << " 1.0\ncomment written by hrsr " << HRSR_VERSION << "\n"
       << "element vertex " << vertices << "\n";
     for (const char* axis : {"x", "y", "z"}) h << "property " << type << " " << axis << "\n";
     if (normals) h << "property float nx\nproperty float ny\nproperty float nz\n";
@@ -121,15 +124,13 @@ std::string header(std::size_t vertices, bool normals, std::size_t triangles,
     return h.str();
 }
 
-} // namespace
-
 void write_ply(const std::string& path, const std::vector<Vec3>& positions,
                const std::vector<Vec3>& normals, const std::vector<Triangle>& triangles,
                CoordinatePrecision precision, const std::vector<PointAttribute>& attributes) {
-    validate(positions, normals, triangles, attributes);
+    validate_ply_data(positions, normals, triangles, attributes);
     AtomicFile file(path);
-    file.stream() << header(positions.size(), !normals.empty(), triangles.size(), precision,
-                            attributes);
+    file.stream() << ply_header("binary_little_endian", positions.size(), !normals.empty(),
+                                triangles.size(), precision, attributes);
     LittleEndianWriter out(file.stream(), path);
     const bool as_float = precision == CoordinatePrecision::Float;
     for (std::size_t i = 0; i < positions.size(); ++i) {

@@ -24,4 +24,14 @@ void write_ply(const std::string& path, const std::vector<Vec3>& positions,
                const std::vector<Vec3>& normals, const std::vector<Triangle>& triangles,
                CoordinatePrecision precision, const std::vector<PointAttribute>& attributes = {});
 
+/// The checks of write_ply() (std::invalid_argument), for writers of other layouts.
+void validate_ply_data(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+                       const std::vector<Triangle>& triangles,
+                       const std::vector<PointAttribute>& attributes);
+
+/// The PLY header write_ply() writes, with `format` "binary_little_endian" or "ascii".
+std::string ply_header(const std::string& format, std::size_t vertices, bool normals,
+                       std::size_t triangles, CoordinatePrecision precision,
+                       const std::vector<PointAttribute>& attributes);
+
 } // namespace hrsr::io
