@@ -34,8 +34,6 @@ cmake --build "$ASAN" -j"$JOBS" >/dev/null
 built=$(date +%s)
 echo "test_sanitizers.sh: ASan/UBSan build took $(( built - start )) s"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
-# LASzip (third-party) leaks on some error paths where it runs in-process: suppressed there only.
-export LSAN_OPTIONS=suppressions=$ROOT/tests/data/lsan_laszip.supp
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 ( cd "$ASAN" && ctest --output-on-failure -j"$JOBS" --timeout 900 -E "$SLOW" )
 tested=$(date +%s)
@@ -57,7 +55,6 @@ fuzz_built=$(date +%s)
 echo "test_sanitizers.sh: fuzz build took $(( fuzz_built - tested )) s"
 
 export ASAN_OPTIONS=detect_leaks=1
-export LSAN_OPTIONS=suppressions=$ROOT/tests/data/lsan_laszip.supp
 fuzz() { # target: fuzz it; on a finding copy the input into tests/data/fuzz/<target>/
   local t=$1 corpus="$FUZZ/corpus/$1" artifacts="$FUZZ/artifacts/$1/"
   mkdir -p "$corpus" "$artifacts"
