@@ -49,7 +49,7 @@ void run_check(const CheckArguments& a) {
     }
     const io::MeshFile mesh = io::read_mesh(a.mesh);
     std::optional<PointSet> input;
-    if (!a.input.empty()) input = io::read_point_set(a.input);
+    if (!a.input.empty()) input = io::read_point_set(a.input, {false}); // positions only: r_v
     std::optional<io::MeshFile> reference;
     if (!a.reference.empty()) reference = io::read_mesh(a.reference);
 

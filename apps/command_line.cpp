@@ -46,6 +46,23 @@ void add_threads_option(CLI::App& c, int& threads) {
         ->check(CLI::NonNegativeNumber);
 }
 
+void add_no_attributes_flag(CLI::App& c, bool& attributes) {
+    c.add_flag_function(
+        "--no-attributes", [&attributes](std::int64_t) { attributes = false; },
+        "Do not carry the points' colour, intensity and other per-point values to the output");
+}
+
+nlohmann::json inputs_json(const std::vector<std::string>& inputs) {
+    if (inputs.size() == 1) return inputs[0];
+    return inputs;
+}
+
+std::string inputs_label(const std::vector<std::string>& inputs) {
+    std::string label;
+    for (const std::string& in : inputs) label += (label.empty() ? "" : ", ") + in;
+    return label;
+}
+
 void check_output_is_not_input(const std::string& input, const std::string& output) {
     namespace fs = std::filesystem;
     std::error_code ec;

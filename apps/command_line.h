@@ -5,8 +5,10 @@
 #include "options.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace hrsr::app {
 
@@ -15,6 +17,15 @@ void add_preprocess_options(CLI::App& command, PreprocessOptions& options);
 
 /// --threads (0 = all cores, the default).
 void add_threads_option(CLI::App& command, int& threads);
+
+/// --no-attributes: sets `attributes` to false.
+void add_no_attributes_flag(CLI::App& command, bool& attributes);
+
+/// The input files as a report shows them: a string for one file, an array for several.
+nlohmann::json inputs_json(const std::vector<std::string>& inputs);
+
+/// The input files as an error message names them ("a.ply" or "a.laz, b.laz").
+std::string inputs_label(const std::vector<std::string>& inputs);
 
 /// Throws UsageError when `output` names the input file (we never overwrite the input).
 void check_output_is_not_input(const std::string& input, const std::string& output);

@@ -20,9 +20,13 @@ CLI::App* add_normals_command(CLI::App& app, NormalsArguments& a) {
                    "Drops non-finite points, merges exact duplicates, estimates normals where the\n"
                    "input has none (PCA + MST orientation), removes small far-away clusters, and\n"
                    "writes the kept points at their input coordinates as binary PLY.");
-    c->add_option("input", a.input, "Point cloud: .ply (ascii/binary), .xyz/.txt, .obj")
+    c->add_option("input", a.input,
+                  "Point cloud: .ply (ascii/binary), .xyz/.txt, .obj, .pts, .pcd, .las/.laz")
         ->required(); // existence is checked by the reader: a missing file is bad input (exit 1)
-    c->add_option("-o,--output", a.output, "Output PLY (binary, with normals)")->required();
+    c->add_option("-o,--output", a.output,
+                  "Output PLY (binary, with normals and the points' attributes)")
+        ->required();
+    add_no_attributes_flag(*c, a.attributes);
     add_preprocess_options(*c, a.options);
     add_threads_option(*c, a.threads);
     c->add_option("--report", a.report, "Write a JSON report (what was dropped, merged and why)");
@@ -54,7 +58,7 @@ void print_summary(const NormalsArguments& a, const PreprocessReport& r, std::si
 void run_normals(const NormalsArguments& a) {
     check_outputs(a.input, a.output, a.report);
     validate(a.options);
-    const PointSet input = io::read_point_set(a.input);
+    const PointSet input = io::read_point_sets({a.input}, {a.attributes});
 
     TerminalProgress bar(!a.quiet);
     Progress progress(bar.callback());
@@ -68,8 +72,11 @@ void run_normals(const NormalsArguments& a) {
     std::vector<Vec3> positions;
     positions.reserve(cloud.size());
     for (std::uint32_t i : cloud.input_index) positions.push_back(input.positions[i]);
-    io::write_ply(a.output, positions, cloud.normals, {}, input.precision);
+    io::write_ply(a.output, positions, cloud.normals, {}, input.precision,
+                  gather(input.attributes, cloud.input_index));
 
+    for (const std::string& w : input.warnings)
+        std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
     for (const std::string& w : report.warnings)
         std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
     if (!a.report.empty()) {

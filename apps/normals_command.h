@@ -16,6 +16,7 @@ struct NormalsArguments {
     PreprocessOptions options;
     int threads = 0;
     bool quiet = false;
+    bool attributes = true; ///< carry the points' colour and other values to the output
 };
 
 /// Registers the subcommand and its options (defaults from the options header).

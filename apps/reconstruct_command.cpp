@@ -2,7 +2,7 @@
 
 #include "command_line.h"
 #include "errors.h"
-#include "io/ply_writer.h"
+#include "io/mesh_writer.h"
 #include "io/point_set_reader.h"
 #include "mesh_summary.h"
 #include "process_stats.h"
@@ -23,10 +23,16 @@ CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& a) {
         "Cleans and orients the cloud as `hrsr normals` does; HRsR (default) collapses\n"
         "it to a fraction of its points, runs Rotation System Reconstruction on them and\n"
         "replays the collapses as vertex splits; RsR runs on the full cloud.");
-    c->add_option("input", a.input, "Point cloud: .ply (ascii/binary), .xyz/.txt, .obj")
+    c->add_option("input", a.inputs,
+                  "Point cloud(s): .ply (ascii/binary), .xyz/.txt, .obj, .pts, .pcd, .las/.laz;\n"
+                  "several files are read as one cloud (tiles) and must have the same fields")
         ->required();
-    c->add_option("-o,--output", a.output, "Output mesh (binary PLY with vertex normals)")
+    c->add_option("-o,--output", a.output,
+                  "Output mesh, format by extension: .ply (binary; every attribute), .obj, .off\n"
+                  "(positions, normals in .obj, colour)")
         ->required();
+    c->add_flag("--ascii", a.ascii, "Write the .ply output as ascii text");
+    add_no_attributes_flag(*c, a.attributes);
     c->add_option("--method", a.method,
                   "hrsr (collapse, RsR, re-expansion) or rsr (RsR on all points)")
         ->transform(CLI::IsMember({"hrsr", "rsr"}, CLI::ignore_case).description(""))
@@ -89,7 +95,7 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
             {"version", HRSR_VERSION},
             {"command", "reconstruct"},
             {"method", a.method},
-            {"input", a.input},
+            {"input", inputs_json(a.inputs)},
             {"output", a.output},
             {"options",
              {{"k", p.k},
@@ -239,23 +245,31 @@ void run_reconstruct(const ReconstructArguments& args) {
     ReconstructArguments a = args;
     a.options.method = a.method == "rsr" ? Method::Rsr : Method::Hrsr;
     parse_l_min(a.l_min, a.options);
-    check_outputs(a.input, a.output, a.report);
+    for (const std::string& in : a.inputs) check_outputs(in, a.output, a.report);
+    io::mesh_format_of(a.output); // an unknown extension is refused before any work
     validate(a.options);
-    const PointSet input = io::read_point_set(a.input);
+    const PointSet input = io::read_point_sets(a.inputs, {a.attributes});
 
     TerminalProgress bar(!a.quiet);
     Progress progress(bar.callback());
     const Execution exec{a.threads, &progress};
     ReconstructionReport report;
-    const Reconstruction mesh =
-        naming_input(a.input, [&] { return reconstruct(input, a.options, exec, report); });
+    const Reconstruction mesh = naming_input(
+        inputs_label(a.inputs), [&] { return reconstruct(input, a.options, exec, report); });
     bar.finish();
 
     std::vector<Vec3> positions;
     positions.reserve(mesh.vertex_input_index.size());
     for (std::uint32_t i : mesh.vertex_input_index) positions.push_back(input.positions[i]);
-    io::write_ply(a.output, positions, mesh.vertex_normals, mesh.triangles, input.precision);
+    // Copies made at non-manifold vertices share their point's index, so they get its values
+    // too; a merged duplicate is represented by its first occurrence (D-3).
+    const std::vector<std::string> left_out =
+        io::write_mesh(a.output, positions, mesh.vertex_normals, mesh.triangles, input.precision,
+                       gather(input.attributes, mesh.vertex_input_index), {a.ascii});
+    for (const std::string& w : left_out) std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
 
+    for (const std::string& w : input.warnings)
+        std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
     for (const std::string& w : report.preprocess.warnings)
         std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
     if (!a.report.empty()) write_json(a.report, report_json(a, report));

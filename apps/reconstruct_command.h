@@ -6,11 +6,12 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace hrsr::app {
 
 struct ReconstructArguments {
-    std::string input;
+    std::vector<std::string> inputs; ///< read as one cloud, in this order
     std::string output;
     std::string report; ///< JSON report path; empty = none
     std::string method = "hrsr";
@@ -18,6 +19,8 @@ struct ReconstructArguments {
     ReconstructionOptions options;
     int threads = 0;
     bool quiet = false;
+    bool attributes = true; ///< carry the points' colour and other values to the vertices
+    bool ascii = false;     ///< ascii PLY output
 };
 
 CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& args);

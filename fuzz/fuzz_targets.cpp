@@ -13,7 +13,7 @@ namespace hrsr::fuzz {
 
 namespace {
 
-using Reader = PointSet (*)(std::istream&, const std::string&);
+using Reader = PointSet (*)(std::istream&, const std::string&, const io::ReadOptions&);
 
 // A bug, not an answer: reported as an exception that is not an hrsr::Error.
 void require(bool ok, const char* what) {
@@ -23,10 +23,13 @@ void require(bool ok, const char* what) {
 void read_with(Reader read, const std::uint8_t* data, std::size_t size) {
     std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
     try {
-        const PointSet s = read(in, "fuzz");
+        const PointSet s = read(in, "fuzz", io::ReadOptions{});
         require(s.normals.empty() || s.normals.size() == s.positions.size() ||
                     read == io::read_obj, // OBJ returns v and vn counts as read
                 "a reader returned normals for only some points");
+        for (const PointAttribute& a : s.attributes)
+            require(a.size() == s.positions.size() && a.bytes.size() == a.size() * size_of(a.type),
+                    "a reader returned an attribute for only some points");
     } catch (const IoError& e) {
         require(std::string(e.what()).rfind("fuzz", 0) == 0, "a read error does not name the file");
     }
@@ -48,6 +51,15 @@ void read_xyz_bytes(const std::uint8_t* data, std::size_t size) {
 }
 void read_obj_bytes(const std::uint8_t* data, std::size_t size) {
     read_with(io::read_obj, data, size);
+}
+void read_pts_bytes(const std::uint8_t* data, std::size_t size) {
+    read_with(io::read_pts, data, size);
+}
+void read_pcd_bytes(const std::uint8_t* data, std::size_t size) {
+    read_with(io::read_pcd, data, size);
+}
+void read_las_bytes(const std::uint8_t* data, std::size_t size) {
+    read_with(io::read_las, data, size);
 }
 
 void reconstruct_bytes(const std::uint8_t* data, std::size_t size) {

@@ -9,10 +9,14 @@
 
 namespace hrsr::fuzz {
 
-/// read_ply / read_xyz / read_obj on the bytes; checks what a successful read returns.
+/// read_ply / read_xyz / read_obj / read_pts / read_pcd / read_las on the bytes; checks what a
+/// successful read returns.
 void read_ply_bytes(const std::uint8_t* data, std::size_t size);
 void read_xyz_bytes(const std::uint8_t* data, std::size_t size);
 void read_obj_bytes(const std::uint8_t* data, std::size_t size);
+void read_pts_bytes(const std::uint8_t* data, std::size_t size);
+void read_pcd_bytes(const std::uint8_t* data, std::size_t size);
+void read_las_bytes(const std::uint8_t* data, std::size_t size);
 
 /// Reconstruction of a small cloud made from the bytes: the first byte chooses the method, the
 /// normals and k; then each 6 bytes are a point (three int16 / 256), each further 6 (if the

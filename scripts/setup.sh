@@ -3,7 +3,8 @@
 #  1. installs every build and test dependency from Debian packages;
 #  2. enables deb-src entries if none exist (needed by `apt-get source`);
 #  3. fetches the MeshLab source package of the installed meshlab version into .deps/
-#     (git-ignored): it bundles vcglib and the plugin headers, matching the installed binary.
+#     (git-ignored): it bundles vcglib and the plugin headers, matching the installed binary;
+#  4. fetches and builds LASzip (LAS/LAZ reading) from Debian trixie's source into .deps/laszip.
 # Users with their own trees can skip step 3 and configure CMake with
 #   -DMESHLAB_SOURCE_DIR=/path/to/meshlab   or   -DVCGLIB_DIR=/path/to/vcglib
 set -euo pipefail
@@ -19,6 +20,8 @@ fi
 PACKAGES=(
   build-essential cmake ninja-build dpkg-dev pkg-config git time python3
   libeigen3-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  # PCD binary_compressed blocks (LZF)
+  liblzf-dev
   clang-format
   # sanitizer and fuzz stage (scripts/test_sanitizers.sh): libFuzzer and OpenMP for clang
   clang-14 libclang-rt-14-dev libomp-14-dev
@@ -72,3 +75,6 @@ if [ ! -e "$DEPS/meshlab-src/vcglib/vcg" ] && [ ! -e "$DEPS/meshlab-src/src/vcgl
   ln -sfn "meshlab-$UP" "$DEPS/meshlab-src"
 fi
 echo "setup.sh: MeshLab source at .deps/meshlab-src ($(cat "$DEPS/meshlab-src/ML_VERSION" 2>/dev/null || echo '?'))"
+
+# LASzip for LAS/LAZ input (not packaged for bookworm): built from trixie's source.
+bash "$ROOT/scripts/fetch_laszip.sh"

@@ -1,9 +1,12 @@
 // A point cloud as it comes from a file or a MeshLab layer, before any cleaning.
 #pragma once
 
+#include "point_attributes.h"
+
 #include <vcg/space/point3.h>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace hrsr {
@@ -20,6 +23,11 @@ struct PointSet {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
     CoordinatePrecision precision = CoordinatePrecision::Float;
+    /// Every other per-point value of the source (colour, intensity, ...), one per position;
+    /// the algorithm ignores them, writers carry them to the vertices made from the points.
+    std::vector<PointAttribute> attributes;
+    /// What the reader left out and why (e.g. list properties), for the user.
+    std::vector<std::string> warnings;
 
     std::size_t size() const { return positions.size(); }
     bool has_normals() const { return !normals.empty(); }

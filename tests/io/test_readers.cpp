@@ -74,11 +74,11 @@ private:
     std::string data_;
 };
 
-using StreamReader = PointSet (*)(std::istream&, const std::string&);
+using StreamReader = PointSet (*)(std::istream&, const std::string&, const ReadOptions&);
 
 PointSet read_bytes(StreamReader read, const std::string& bytes, const std::string& name) {
     std::istringstream in(bytes, std::ios::binary);
-    return read(in, name);
+    return read(in, name, ReadOptions{});
 }
 
 PointSet ply(const std::string& bytes) {
@@ -664,8 +664,9 @@ TEST(ReadPointSet, DispatchesByExtensionCaseInsensitively) {
     EXPECT_EQ(read_point_set(folder.write("a.PLY", ply_text)).positions.at(0), Vec3(1, 2, 3));
     EXPECT_EQ(read_point_set(folder.write("b.Xyz", "4 5 6\n")).positions.at(0), Vec3(4, 5, 6));
     EXPECT_EQ(read_point_set(folder.write("c.txt", "7 8 9\n")).positions.at(0), Vec3(7, 8, 9));
-    // .pts (Leica: a count line, then x y z intensity [r g b]) is not XYZ: not claimed.
+    // .pts is Leica's format (a count line first), not XYZ: a file without the count is refused.
     EXPECT_THROW(read_point_set(folder.write("d.pts", "1 1 1\n")), IoError);
+    EXPECT_EQ(read_point_set(folder.write("f.Pts", "1\n1 1 1\n")).size(), 1u);
     EXPECT_EQ(read_point_set(folder.write("e.OBJ", "v 2 2 2\n")).size(), 1u);
 }
 

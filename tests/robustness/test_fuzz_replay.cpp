@@ -35,6 +35,9 @@ TEST(FuzzReplay, Readers) {
     EXPECT_GE(replay("read_ply", fuzz::read_ply_bytes), 3u);
     EXPECT_GE(replay("read_xyz", fuzz::read_xyz_bytes), 1u);
     EXPECT_GE(replay("read_obj", fuzz::read_obj_bytes), 1u);
+    EXPECT_GE(replay("read_pts", fuzz::read_pts_bytes), 1u);
+    EXPECT_GE(replay("read_pcd", fuzz::read_pcd_bytes), 3u);
+    EXPECT_GE(replay("read_las", fuzz::read_las_bytes), 2u);
 }
 
 TEST(FuzzReplay, Reconstruction) {

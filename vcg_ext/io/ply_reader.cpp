@@ -1,6 +1,7 @@
 // PLY reader: ascii and binary (both endiannesses), any element layout. Reads the vertex
-// element's x/y/z (and nx/ny/nz when all three exist) and, for meshes, the face element's
-// vertex_indices (or vertex_index) list; everything else is skipped.
+// element's x/y/z (and nx/ny/nz when all three exist), every other scalar vertex property as a
+// point attribute and, for meshes, the face element's vertex_indices (or vertex_index) list;
+// everything else is skipped.
 #include "io/mesh_reader.h"
 #include "io/point_set_reader.h"
 #include "io/text_parsing.h"
@@ -20,25 +21,8 @@ using detail::fail;
 using detail::quote;
 
 enum class Format { Ascii, BinaryLittleEndian, BinaryBigEndian };
-enum class Type : std::uint8_t { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
-
-std::size_t size_of(Type type) {
-    switch (type) {
-    case Type::Int8:
-    case Type::UInt8:
-        return 1;
-    case Type::Int16:
-    case Type::UInt16:
-        return 2;
-    case Type::Int32:
-    case Type::UInt32:
-    case Type::Float32:
-        return 4;
-    case Type::Float64:
-        return 8;
-    }
-    return 1;
-}
+/// The PLY scalar types are the attribute types (point_attributes.h).
+using Type = ScalarType;
 
 bool is_integer(Type type) {
     return type != Type::Float32 && type != Type::Float64;
@@ -319,19 +303,56 @@ void HeaderParser::parse_property(detail::Tokens& tokens) {
 constexpr int kAbsent = -1;
 constexpr std::size_t kNoList = std::numeric_limits<std::size_t>::max();
 
-/// Where x y z nx ny nz are among the vertex properties.
+/// Where x y z nx ny nz and the attributes are among the vertex properties. Values are read
+/// into an array: x..nz at 0..5, attribute j at kFirstAttribute + j.
+constexpr int kFirstAttribute = 6;
+
 struct VertexLayout {
     std::array<int, 6> index{kAbsent, kAbsent, kAbsent, kAbsent, kAbsent, kAbsent};
     int wanted = 3; // 6 with normals
     CoordinatePrecision precision = CoordinatePrecision::Double;
+    std::vector<std::size_t> attribute_property; ///< the property of each attribute
 
-    /// For each property, which of x..nz it is (or kAbsent).
+    std::size_t value_count() const { return kFirstAttribute + attribute_property.size(); }
+
+    /// For each property, where its value goes (or kAbsent).
     std::vector<int> targets(std::size_t property_count) const {
         std::vector<int> t(property_count, kAbsent);
         for (int k = 0; k < wanted; ++k) t[static_cast<std::size_t>(index[k])] = k;
+        for (std::size_t j = 0; j < attribute_property.size(); ++j)
+            t[attribute_property[j]] = kFirstAttribute + static_cast<int>(j);
         return t;
     }
 };
+
+bool is_geometry(const std::string& property) {
+    for (const char* g : {"x", "y", "z", "nx", "ny", "nz"})
+        if (property == g) return true;
+    return false;
+}
+
+/// Every scalar vertex property except x..nz becomes an attribute (its first occurrence, if a
+/// name repeats); lists cannot be a per-vertex value of the mesh and are left out with a warning.
+void choose_attributes(const Element& vertex, VertexLayout& layout, PointSet& points) {
+    std::vector<std::string> seen;
+    for (std::size_t i = 0; i < vertex.properties.size(); ++i) {
+        const Property& p = vertex.properties[i];
+        if (is_geometry(p.name)) continue;
+        if (p.is_list) {
+            points.warnings.push_back("vertex property " + quote(p.name) +
+                                      " is a list; it is not carried to the output");
+            continue;
+        }
+        if (std::find(seen.begin(), seen.end(), p.name) != seen.end()) {
+            points.warnings.push_back("vertex property " + quote(p.name) +
+                                      " appears twice; only the first is carried to the output");
+            continue;
+        }
+        seen.push_back(p.name);
+        layout.attribute_property.push_back(i);
+        points.attributes.emplace_back(p.name, p.type);
+    }
+}
 
 VertexLayout vertex_layout(const Element& vertex, const std::string& name) {
     static const char* const kNames[6] = {"x", "y", "z", "nx", "ny", "nz"};
@@ -376,17 +397,29 @@ void reserve_vertices(PointSet& points, std::uint64_t count, std::size_t min_ite
     }
     points.positions.reserve(static_cast<std::size_t>(n));
     if (normals) points.normals.reserve(static_cast<std::size_t>(n));
-}
-
-void store(PointSet& points, const double* v, int wanted) {
-    points.positions.emplace_back(v[0], v[1], v[2]);
-    if (wanted == 6) points.normals.emplace_back(v[3], v[4], v[5]);
+    for (PointAttribute& a : points.attributes)
+        a.bytes.reserve(static_cast<std::size_t>(n) * size_of(a.type));
 }
 
 std::string item_label(const Element& element, std::uint64_t item) {
     const std::string quoted = quote(element.name); // names come from the file: sanitise
     return quoted.substr(1, quoted.size() - 2) + " " + std::to_string(item + 1) + " of " +
            std::to_string(element.count);
+}
+
+/// Appends one vertex. Attribute values from ascii text may not fit their declared type.
+void store(PointSet& points, const double* v, const VertexLayout& layout, const Element& vertex,
+           std::uint64_t item, const std::string& name) {
+    points.positions.emplace_back(v[0], v[1], v[2]);
+    if (layout.wanted == 6) points.normals.emplace_back(v[3], v[4], v[5]);
+    for (std::size_t j = 0; j < points.attributes.size(); ++j) {
+        PointAttribute& a = points.attributes[j];
+        const double value = v[kFirstAttribute + j];
+        if (!fits(a.type, value))
+            fail(name, item_label(vertex, item) + ", property " + quote(a.name) + ": " +
+                           std::to_string(value) + " is not a " + ply_type_name(a.type) + " value");
+        a.append(value);
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -540,32 +573,39 @@ void BinaryReader::read_vertices(const Element& vertex, const VertexLayout& layo
         return;
     }
     const std::vector<int> targets = layout.targets(vertex.properties.size());
-    double values[6] = {};
+    std::vector<double> values(layout.value_count());
     for (std::uint64_t i = 0; i < vertex.count; ++i) {
-        if (!try_read_item(vertex, i, targets, values)) truncated(vertex, i);
-        store(points, values, layout.wanted);
+        if (!try_read_item(vertex, i, targets, values.data())) truncated(vertex, i);
+        store(points, values.data(), layout, vertex, i, name_);
     }
 }
 
 /// The common case: every vertex has the same size, so decode at fixed offsets.
 void BinaryReader::read_fixed_vertices(const Element& vertex, const VertexLayout& layout,
                                        PointSet& points) {
-    std::array<std::size_t, 6> offset{};
-    std::array<Type, 6> type{};
-    for (int k = 0; k < layout.wanted; ++k) {
-        const auto index = static_cast<std::size_t>(layout.index[k]);
-        for (std::size_t i = 0; i < index; ++i) offset[k] += size_of(vertex.properties[i].type);
-        type[k] = vertex.properties[index].type;
+    // (target, offset in the record, type) of every value read
+    struct Field {
+        std::size_t target;
+        std::size_t offset;
+        Type type;
+    };
+    std::vector<Field> fields;
+    const std::vector<int> targets = layout.targets(vertex.properties.size());
+    std::size_t offset = 0;
+    for (std::size_t i = 0; i < vertex.properties.size(); ++i) {
+        if (targets[i] != kAbsent)
+            fields.push_back(
+                {static_cast<std::size_t>(targets[i]), offset, vertex.properties[i].type});
+        offset += size_of(vertex.properties[i].type);
     }
     const std::size_t size = vertex.min_item_size();
-    double values[6] = {};
+    std::vector<double> values(layout.value_count());
     for (std::uint64_t i = 0; i < vertex.count; ++i) {
         if (!src_.ensure(size)) truncated(vertex, i);
         const unsigned char* record = src_.data();
-        for (int k = 0; k < layout.wanted; ++k) {
-            values[k] = load_scalar(record + offset[k], type[k], swap_);
-        }
-        store(points, values, layout.wanted);
+        for (const Field& f : fields)
+            values[f.target] = load_scalar(record + f.offset, f.type, swap_);
+        store(points, values.data(), layout, vertex, i, name_);
         src_.consume(size);
     }
 }
@@ -697,10 +737,10 @@ void AsciiReader::read_vertices(const Element& vertex, const VertexLayout& layou
     reserve_vertices(points, vertex.count, 2 * vertex.properties.size(), src_.remaining(),
                      layout.wanted == 6);
     const std::vector<int> targets = layout.targets(vertex.properties.size());
-    double values[6] = {};
+    std::vector<double> values(layout.value_count());
     for (std::uint64_t i = 0; i < vertex.count; ++i) {
-        read_item(vertex, i, targets, values);
-        store(points, values, layout.wanted);
+        read_item(vertex, i, targets, values.data());
+        store(points, values.data(), layout, vertex, i, name_);
     }
 }
 
@@ -751,11 +791,12 @@ void read_faces(Reader& reader, const Element& face, const std::string& name, Me
 /// Reads the vertices and, if `faces` is given, the triangles (elements in file order).
 template <class Reader>
 void read_elements(Reader& reader, const Header& header, const std::string& name, PointSet& points,
-                   MeshFile* faces) {
+                   MeshFile* faces, bool attributes) {
     const auto vertex = std::find_if(header.elements.begin(), header.elements.end(),
                                      [](const Element& e) { return e.name == "vertex"; });
     if (vertex == header.elements.end()) fail(name, "the header has no 'vertex' element");
-    const VertexLayout layout = vertex_layout(*vertex, name);
+    VertexLayout layout = vertex_layout(*vertex, name);
+    if (attributes) choose_attributes(*vertex, layout, points);
     points.precision = layout.precision;
     bool face_read = false;
     for (auto e = header.elements.begin(); e != header.elements.end(); ++e) {
@@ -772,24 +813,24 @@ void read_elements(Reader& reader, const Header& header, const std::string& name
 }
 
 void read_ply_unguarded(std::istream& in, const std::string& name, PointSet& points,
-                        MeshFile* faces) {
+                        MeshFile* faces, bool attributes) {
     ByteSource src(in);
     const Header header = HeaderParser(name).parse(src);
     if (header.format == Format::Ascii) {
         AsciiReader reader(src, header.line_count, name);
-        read_elements(reader, header, name, points, faces);
+        read_elements(reader, header, name, points, faces, attributes);
     } else {
         BinaryReader reader(src, header.format, name);
-        read_elements(reader, header, name, points, faces);
+        read_elements(reader, header, name, points, faces, attributes);
     }
 }
 
 } // namespace
 
-PointSet read_ply(std::istream& in, const std::string& name) {
+PointSet read_ply(std::istream& in, const std::string& name, const ReadOptions& options) {
     return detail::guarded_read(name, [&] {
         PointSet points;
-        read_ply_unguarded(in, name, points, nullptr);
+        read_ply_unguarded(in, name, points, nullptr, options.attributes);
         return points;
     });
 }
@@ -797,7 +838,7 @@ PointSet read_ply(std::istream& in, const std::string& name) {
 MeshFile read_ply_mesh(std::istream& in, const std::string& name) {
     return detail::guarded_read(name, [&] {
         MeshFile mesh;
-        read_ply_unguarded(in, name, mesh.points, &mesh);
+        read_ply_unguarded(in, name, mesh.points, &mesh, false);
         const std::size_t n = mesh.points.size();
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
             for (std::uint32_t v : mesh.triangles[t])

@@ -35,12 +35,17 @@ public:
     template <class T>
     void put(T value) {
         static_assert(std::is_arithmetic_v<T>);
-        if (used_ + sizeof(T) > sizeof buffer_) flush();
         unsigned char bytes[sizeof(T)];
         std::memcpy(bytes, &value, sizeof(T));
-        if (big_endian_host_) std::reverse(bytes, bytes + sizeof(T));
-        std::memcpy(buffer_ + used_, bytes, sizeof(T));
-        used_ += sizeof(T);
+        put_host_order(bytes, sizeof(T));
+    }
+
+    /// One value of `size` bytes (at most 8) in host byte order.
+    void put_host_order(const unsigned char* value, std::size_t size) {
+        if (used_ + size > sizeof buffer_) flush();
+        std::memcpy(buffer_ + used_, value, size);
+        if (big_endian_host_) std::reverse(buffer_ + used_, buffer_ + used_ + size);
+        used_ += size;
     }
 
     void flush() {
@@ -57,8 +62,30 @@ private:
     std::size_t used_ = 0;
 };
 
-void validate(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
-              const std::vector<Triangle>& triangles) {
+void validate_attributes(const std::vector<Vec3>& positions,
+                         const std::vector<PointAttribute>& attributes) {
+    std::vector<std::string> names = {"x", "y", "z", "nx", "ny", "nz"};
+    for (const PointAttribute& a : attributes) {
+        if (a.size() != positions.size() || a.bytes.size() != a.size() * size_of(a.type))
+            throw std::invalid_argument("write_ply: attribute '" + a.name + "' has " +
+                                        std::to_string(a.size()) + " values for " +
+                                        std::to_string(positions.size()) + " positions");
+        const bool bad_name =
+            a.name.empty() ||
+            std::any_of(a.name.begin(), a.name.end(), [](char c) { return c <= ' ' || c == 0x7f; });
+        if (bad_name || std::find(names.begin(), names.end(), a.name) != names.end())
+            throw std::invalid_argument("write_ply: attribute name '" + a.name +
+                                        "' is empty, has spaces or is used twice");
+        names.push_back(a.name);
+    }
+}
+
+} // namespace
+
+void validate_ply_data(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+                       const std::vector<Triangle>& triangles,
+                       const std::vector<PointAttribute>& attributes) {
+    validate_attributes(positions, attributes);
     if (!normals.empty() && normals.size() != positions.size()) {
         throw std::invalid_argument("write_ply: " + std::to_string(normals.size()) +
                                     " normals for " + std::to_string(positions.size()) +
@@ -79,14 +106,17 @@ void validate(const std::vector<Vec3>& positions, const std::vector<Vec3>& norma
     }
 }
 
-std::string header(std::size_t vertices, bool normals, std::size_t triangles,
-                   CoordinatePrecision precision) {
+std::string ply_header(const std::string& format, std::size_t vertices, bool normals,
+                       std::size_t triangles, CoordinatePrecision precision,
+                       const std::vector<PointAttribute>& attributes) {
     const char* const type = precision == CoordinatePrecision::Float ? "float" : "double";
     std::ostringstream h;
-    h << "ply\nformat binary_little_endian 1.0\ncomment written by hrsr " << HRSR_VERSION << "\n"
+    h << "ply\nformat " << format << " 1.0\ncomment written by hrsr " << HRSR_VERSION << "\n"
       << "element vertex " << vertices << "\n";
     for (const char* axis : {"x", "y", "z"}) h << "property " << type << " " << axis << "\n";
     if (normals) h << "property float nx\nproperty float ny\nproperty float nz\n";
+    for (const PointAttribute& a : attributes)
+        h << "property " << ply_type_name(a.type) << " " << a.name << "\n";
     if (triangles > 0) {
         h << "element face " << triangles << "\nproperty list uchar int vertex_indices\n";
     }
@@ -94,14 +124,13 @@ std::string header(std::size_t vertices, bool normals, std::size_t triangles,
     return h.str();
 }
 
-} // namespace
-
 void write_ply(const std::string& path, const std::vector<Vec3>& positions,
                const std::vector<Vec3>& normals, const std::vector<Triangle>& triangles,
-               CoordinatePrecision precision) {
-    validate(positions, normals, triangles);
+               CoordinatePrecision precision, const std::vector<PointAttribute>& attributes) {
+    validate_ply_data(positions, normals, triangles, attributes);
     AtomicFile file(path);
-    file.stream() << header(positions.size(), !normals.empty(), triangles.size(), precision);
+    file.stream() << ply_header("binary_little_endian", positions.size(), !normals.empty(),
+                                triangles.size(), precision, attributes);
     LittleEndianWriter out(file.stream(), path);
     const bool as_float = precision == CoordinatePrecision::Float;
     for (std::size_t i = 0; i < positions.size(); ++i) {
@@ -115,6 +144,7 @@ void write_ply(const std::string& path, const std::vector<Vec3>& positions,
         if (!normals.empty()) {
             for (int k = 0; k < 3; ++k) out.put(static_cast<float>(normals[i][k]));
         }
+        for (const PointAttribute& a : attributes) out.put_host_order(a.data(i), size_of(a.type));
     }
     for (const Triangle& t : triangles) {
         out.put(std::uint8_t{3});

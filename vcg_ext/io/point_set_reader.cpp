@@ -12,7 +12,7 @@
 namespace hrsr::io {
 namespace {
 
-using Reader = PointSet (*)(std::istream&, const std::string&);
+using Reader = PointSet (*)(std::istream&, const std::string&, const ReadOptions&);
 
 Reader reader_for(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
@@ -21,14 +21,17 @@ Reader reader_for(const std::string& path) {
     if (ext == ".ply") return read_ply;
     if (ext == ".xyz" || ext == ".txt") return read_xyz;
     if (ext == ".obj") return read_obj;
+    if (ext == ".pts") return read_pts;
+    if (ext == ".pcd") return read_pcd;
+    if (ext == ".las" || ext == ".laz") return read_las;
     detail::fail(path, (ext.empty() ? std::string("no file extension")
                                     : "unknown file extension " + detail::quote(ext)) +
-                           " (supported: .ply, .xyz, .txt, .obj)");
+                           " (supported: .ply, .xyz, .txt, .obj, .pts, .pcd, .las, .laz)");
 }
 
 } // namespace
 
-PointSet read_point_set(const std::string& path) {
+PointSet read_point_set(const std::string& path, const ReadOptions& options) {
     return detail::guarded_read(path, [&] {
         std::error_code ec;
         if (std::filesystem::is_directory(path, ec)) {
@@ -41,7 +44,7 @@ PointSet read_point_set(const std::string& path) {
             detail::fail(path, std::string("cannot open: ") +
                                    (errno != 0 ? std::strerror(errno) : "unknown error"));
         }
-        return read(in, path);
+        return read(in, path, options);
     });
 }
 

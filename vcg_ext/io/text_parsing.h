@@ -11,6 +11,7 @@
 #include <istream>
 #include <limits>
 #include <new>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -135,6 +136,18 @@ private:
     std::string buffer_;
     std::size_t number_ = 0;
 };
+
+/// The bytes left in a stream from its read position, if it can tell (files and string streams
+/// can). Lets readers check a header's sizes before allocating for them.
+inline std::optional<std::uint64_t> remaining_bytes(std::istream& in) {
+    const std::streampos here = in.tellg();
+    in.seekg(0, std::ios::end);
+    const std::streampos end = in.tellg();
+    in.clear();
+    in.seekg(here);
+    if (here == std::streampos(-1) || end == std::streampos(-1) || end < here) return std::nullopt;
+    return static_cast<std::uint64_t>(end - here);
+}
 
 /// Runs a reader and turns every exception into an IoError naming the file, so that callers
 /// only ever see IoError (e.g. bad_alloc from a header that lies about its size).

@@ -49,7 +49,7 @@ PointSet read_xyz_unguarded(std::istream& in, const std::string& name) {
 
 } // namespace
 
-PointSet read_xyz(std::istream& in, const std::string& name) {
+PointSet read_xyz(std::istream& in, const std::string& name, const ReadOptions&) {
     return detail::guarded_read(name, [&] { return read_xyz_unguarded(in, name); });
 }
 

@@ -1,0 +1,7 @@
+// libFuzzer entry point: the LAS/LAZ reader (LASzip) (see fuzz_targets.h).
+#include "fuzz_targets.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    hrsr::fuzz::read_las_bytes(data, size);
+    return 0;
+}
