@@ -1,4 +1,4 @@
-// The few MeshLab plugin-API differences between versions (../shared/docs/MESHLAB.md §5), chosen
+// The few MeshLab plugin-API differences between versions (README "The MeshLab filter"), chosen
 // by HRSR_ML_API (filter_hrsr/CMakeLists.txt reads it off the MeshLab headers). Built and run:
 // 2020.09 (bookworm, meshlabserver), 2022.02 (API 2022) and 2025.07 (API 2023; RichPercentage)
 // in the Debian trixie and sid roots of scripts/root/.
