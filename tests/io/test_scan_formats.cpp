@@ -267,6 +267,11 @@ TEST(PcdReader, CorruptOrTruncatedCompressedBlocksAreErrors) {
     std::string corrupt = good;
     for (std::size_t i = data + 8; i < corrupt.size(); ++i) corrupt[i] = char(0xff);
     expect_error(read_pcd, corrupt, "corrupt compressed block");
+    // An empty compressed block that claims points (found by fuzz_read_pcd).
+    std::string empty = good.substr(0, data);
+    PcdCloud::put(empty, std::uint32_t(0));
+    PcdCloud::put(empty, std::uint32_t(c.columns().size()));
+    expect_error(read_pcd, empty, "corrupt compressed block");
 }
 #endif
 

@@ -357,7 +357,9 @@ void read_binary(std::istream& in, Header& h, PointSet& points, const std::strin
                            std::to_string(total) + " bytes, the compressed block holds " +
                            std::to_string(unpacked));
         // LZF expands at most ~100x: a larger claim is corrupt (and must not allocate).
-        if (unpacked > 128 * std::uint64_t(packed) + 1024)
+        // An empty block must not reach lzf_decompress: it reads one byte before it checks
+        // the input's length.
+        if ((unpacked > 0 && packed == 0) || unpacked > 128 * std::uint64_t(packed) + 1024)
             fail(name, "corrupt compressed block: " + std::to_string(packed) +
                            " bytes cannot hold " + std::to_string(unpacked));
         const std::vector<unsigned char> compressed =
