@@ -2,6 +2,7 @@
 
 #include "usage_error.h"
 
+#include <cstdio>
 #include <filesystem>
 
 namespace hrsr::app {
@@ -38,6 +39,52 @@ void add_preprocess_options(CLI::App& c, PreprocessOptions& o) {
     c.add_option("--min-component-size", o.min_component_size,
                  "Drop connected pieces with fewer points than this (or than the whole cloud)")
         ->capture_default_str();
+}
+
+const char* flag_of(OptionId option) {
+    switch (option) {
+    case OptionId::K:
+        return "--k";
+    case OptionId::R:
+        return "--r";
+    case OptionId::Theta:
+        return "--theta";
+    case OptionId::KNormals:
+        return "--k-normals";
+    case OptionId::KSmoothing:
+        return "--k-smoothing";
+    case OptionId::MinComponentSize:
+        return "--min-component-size";
+    case OptionId::MinHandleLoop:
+        return "--n";
+    case OptionId::Handles:
+        return "--handles";
+    case OptionId::FoldRepairRounds:
+        return "--fold-repair-rounds";
+    case OptionId::CollapseRatio:
+        return "--collapse-ratio";
+    case OptionId::CollapseK:
+        return "--collapse-k";
+    case OptionId::LMin:
+        return "--l-min";
+    case OptionId::RefinementIterations:
+        return "--refinement-iterations";
+    case OptionId::Output:
+        return "-o";
+    }
+    return option_name(option);
+}
+
+std::string worded(const InvalidOption& error) {
+    return std::string(flag_of(error.option)) + " " + error.problem;
+}
+
+void print_warnings(const std::vector<std::string>& reader, const PreprocessReport& report) {
+    for (const std::string& w : reader) std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
+    for (const std::string& w : report.warnings)
+        std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
+    if (report.input_normals_look_inconsistent)
+        std::fprintf(stderr, "hrsr: hint: --reestimate-normals ignores the input's normals\n");
 }
 
 void add_threads_option(CLI::App& c, int& threads) {

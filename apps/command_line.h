@@ -3,6 +3,7 @@
 
 #include "errors.h"
 #include "options.h"
+#include "preprocess/report.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -14,6 +15,17 @@ namespace hrsr::app {
 
 /// --k, --r, --theta, --distance, --reestimate-normals, --k-normals, --min-component-size.
 void add_preprocess_options(CLI::App& command, PreprocessOptions& options);
+
+/// The flag that sets `option` ("--collapse-ratio"; "-o" for the output).
+const char* flag_of(OptionId option);
+
+/// The core's complaint about an option, worded with its flag: "--k must be between 3 and 1000
+/// (got 1)".
+std::string worded(const InvalidOption& error);
+
+/// Prints the reader's and the pre-processing's warnings on stderr, with the flag that helps
+/// where there is one.
+void print_warnings(const std::vector<std::string>& reader, const PreprocessReport& report);
 
 /// --threads (0 = all cores, the default).
 void add_threads_option(CLI::App& command, int& threads);

@@ -1,6 +1,7 @@
 // hrsr: surface reconstruction from point clouds (command-line tool).
 // Exit codes: 0 success, 1 unreadable or invalid input / failed output, 2 usage error.
 #include "check_command.h"
+#include "command_line.h"
 #include "errors.h"
 #include "normals_command.h"
 #include "process_stats.h"
@@ -57,7 +58,7 @@ int main(int argc, char** argv) {
     } catch (const hrsr::app::UsageError& e) {
         return fail(2, e.what());
     } catch (const hrsr::InvalidOption& e) {
-        return fail(2, e.what());
+        return fail(2, hrsr::app::worded(e).c_str());
     } catch (const hrsr::Error& e) { // IoError, InvalidInput, Cancelled
         return fail(1, e.what());
     } catch (const std::bad_alloc&) {

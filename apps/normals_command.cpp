@@ -75,10 +75,7 @@ void run_normals(const NormalsArguments& a) {
     io::write_ply(a.output, positions, cloud.normals, {}, input.precision,
                   gather(input.attributes, cloud.input_index));
 
-    for (const std::string& w : input.warnings)
-        std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
-    for (const std::string& w : report.warnings)
-        std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
+    print_warnings(input.warnings, report);
     if (!a.report.empty()) {
         nlohmann::json doc = {
             {"tool", "hrsr"},

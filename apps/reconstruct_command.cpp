@@ -162,9 +162,7 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"records", e.records},
               {"records_replayed", e.replayed},
               {"records_failed",
-               {{"no_split_pair", e.failed_no_pair},
-                {"unresolved_crossing", e.failed_crossings},
-                {"node_not_in_mesh", e.skipped_no_vertex}}},
+               {{"no_split_pair", e.failed_no_pair}, {"node_not_in_mesh", e.skipped_no_vertex}}},
               {"unresolved_crossings", e.unresolved_crossings},
               {"crossing_flips", e.crossing_flips},
               {"boundary_triangles_removed", e.triangles_removed},
@@ -193,8 +191,8 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
         std::printf("  HRsR: RsR on %zu points; %zu of %zu splits replayed (%zu failed, %zu merged "
                     "by l_min), "
                     "%zu with an unresolved crossing\n",
-                    r.coarse_points, e.replayed, e.records, e.failed_no_pair + e.failed_crossings,
-                    e.merged_by_l_min, e.unresolved_crossings);
+                    r.coarse_points, e.replayed, e.records, e.failed_no_pair, e.merged_by_l_min,
+                    e.unresolved_crossings);
     }
     const std::string genus = genus_of_closed_components_text(m);
     const std::string largest = largest_component_text(m);
@@ -236,8 +234,8 @@ void parse_l_min(const std::string& text, ReconstructionOptions& o) {
         used = 0;
     }
     if (used == 0 || used != number.size())
-        throw InvalidOption("l-min must be a length or a percentage such as 1% (got \"" + text +
-                            "\")");
+        throw InvalidOption(OptionId::LMin,
+                            "must be a length or a percentage such as 1% (got \"" + text + "\")");
     (percent ? o.l_min_percent : o.reexpand.l_min) = value;
 }
 
@@ -268,10 +266,7 @@ void run_reconstruct(const ReconstructArguments& args) {
                        gather(input.attributes, mesh.vertex_input_index), {a.ascii});
     for (const std::string& w : left_out) std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
 
-    for (const std::string& w : input.warnings)
-        std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
-    for (const std::string& w : report.preprocess.warnings)
-        std::fprintf(stderr, "hrsr: warning: %s\n", w.c_str());
+    print_warnings(input.warnings, report.preprocess);
     if (!a.report.empty()) write_json(a.report, report_json(a, report));
     if (!a.quiet) print_summary(a, report);
 }

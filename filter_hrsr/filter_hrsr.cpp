@@ -57,6 +57,8 @@ void FilterHrsrPlugin::run(MeshDocument& md, const RichParameterList& par, vcg::
     md.setCurrentMesh(out->id());
     for (const std::string& w : report.preprocess.warnings)
         log_message("HRsR warning: %s", w.c_str());
+    if (report.preprocess.input_normals_look_inconsistent)
+        log_message("HRsR hint: Normals = \"Always re-estimate\" ignores the layer's normals");
     if (par.getBool("select_dropped")) {
         const std::size_t selected = hrsr::plugin::select_dropped(points, mesh, report);
         log_message("HRsR: %zu points not in the mesh are selected in layer %s", selected,
@@ -131,6 +133,8 @@ std::map<std::string, QVariant> FilterHrsrPlugin::applyFilter(const QAction* a,
         run(md, par, cb);
     } catch (const MLException&) {
         throw;
+    } catch (const hrsr::InvalidOption& e) {
+        throw MLException("HRsR: " + hrsr::plugin::worded(e));
     } catch (const std::exception& e) {
         throw MLException(QString("HRsR: ") + e.what());
     }
@@ -163,6 +167,11 @@ bool FilterHrsrPlugin::applyFilter(QAction* a, MeshDocument& md, const RichParam
     }
     try { // nothing may escape: an exception or an abort would take MeshLab down
         run(md, par, cb);
+    } catch (const hrsr::InvalidOption& e) {
+        const QString reason = hrsr::plugin::worded(e);
+        errorMessage = "HRsR: " + reason;
+        Log(GLLogStream::SYSTEM, "HRsR failed: %s", qUtf8Printable(reason));
+        return false;
     } catch (const std::exception& e) { // hrsr errors, MLException, bad_alloc, vcg exceptions
         errorMessage = QString("HRsR: ") + e.what();
         Log(GLLogStream::SYSTEM, "HRsR failed: %s", e.what()); // meshlabserver only prints the log

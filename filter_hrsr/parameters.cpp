@@ -94,6 +94,40 @@ P param(const QString& name, Values&&... values) {
 
 } // namespace
 
+QString worded(const InvalidOption& error) {
+    const char* field = nullptr;
+    switch (error.option) {
+    case OptionId::K:
+        field = "k";
+        break;
+    case OptionId::R:
+        field = "r";
+        break;
+    case OptionId::Theta:
+        field = "theta";
+        break;
+    case OptionId::MinHandleLoop:
+        field = "n";
+        break;
+    case OptionId::Handles:
+        field = "handles";
+        break;
+    case OptionId::CollapseRatio:
+        field = "collapse_ratio";
+        break;
+    case OptionId::CollapseK:
+        field = "collapse_k";
+        break;
+    case OptionId::LMin:
+        field = "l_min";
+        break;
+    default:
+        break; // not in the dialog
+    }
+    const QString name = field ? doc(field).label : QString(option_name(error.option));
+    return name + " " + QString::fromStdString(error.problem);
+}
+
 void add_parameters(const MeshModel& m, RichParameterList& par) {
     const ReconstructionOptions d;
     const PreprocessOptions& p = d.rsr.preprocess;

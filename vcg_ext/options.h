@@ -72,8 +72,6 @@ struct CollapseOptions {
     double collapse_ratio = 0.125;
     /// Neighbours (true, not counting the point) of the collapse graph (D-14; GEL used 4).
     int collapse_k = 6;
-    /// Stop after this many collapses in total (0 = no cap; for debugging, §6.2).
-    std::size_t max_collapses = 0;
 };
 
 void validate(const CollapseOptions& options);
@@ -89,20 +87,8 @@ struct ReexpandOptions {
     /// l_min in the units of the input; 0 = replay every collapse (full detail).
     double l_min = 0;
     LMinMode l_min_mode = LMinMode::Stop;
-    /// After a stop, move every vertex to its node's own input point (the output still
-    /// interpolates input points).
-    bool snap_to_input = true;
     /// Flip passes around each new vertex (§8.6; GEL's demo uses 0).
     int refinement_iterations = 1;
-    /// A flip is considered when an angle at the edge's endpoints is below this (degrees).
-    double refinement_angle_degrees = 22.5;
-    /// w in E = E_D + w · E_A (§8.4); 0 skips the min-angle term.
-    double min_angle_weight = 1.0;
-    /// Triangles whose smallest angle is below this (degrees) cost the penalty instead.
-    double min_angle_threshold_degrees = 3.0;
-    double min_angle_penalty = 0.1;
-    /// Fail a record (alias its point) instead of splitting when a crossing cannot be resolved.
-    bool strict_crossings = false;
 };
 
 void validate(const ReexpandOptions& options);
@@ -169,6 +155,14 @@ inline constexpr std::size_t kMinHandleHops = 4;
 /// in input spacings: only components of fewer than (2n)² = 1,600 points at n = 20 are affected.
 /// A torus tube of radius r around a circle of radius R is sqrt(r/R)·sqrt(N) spacings around.
 inline constexpr double kSmallSurfaceLoopFraction = 0.5;
+/// Re-expansion flips (§8.6): a flip is considered when an angle at the edge's endpoints is
+/// below this.
+inline constexpr double kRefinementAngleDegrees = 22.5;
+/// Split energy E = E_D + w · E_A (§8.4): the weight w of the min-angle term, and the smallest
+/// angle below which a triangle costs the flat penalty instead.
+inline constexpr double kMinAngleWeight = 1.0;
+inline constexpr double kMinAngleThresholdDegrees = 3.0;
+inline constexpr double kMinAnglePenalty = 0.1;
 /// Re-expansion (§8.3, §8.4): crossing search extension, round cap, dihedral guard on 1 − cos.
 inline constexpr double kCrossingExtension = 1.11;
 inline constexpr int kCrossingRounds = 100;

@@ -269,9 +269,10 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
         coarse = hand_off(cloud, collapsed, pre, exec, report, dropped_nodes);
     }
     if (coarse.size() == 0)
-        throw InvalidInput(
-            "no point is left after collapsing: every collapsed component is smaller than " +
-            std::to_string(pre.min_component_size) + " points; raise collapse-ratio");
+        throw InvalidOption(OptionId::CollapseRatio,
+                            "is too small for this cloud: no point is left after collapsing "
+                            "(every collapsed component is smaller than " +
+                                std::to_string(pre.min_component_size) + " points); raise it");
     rsr::CloudMesh rsr_mesh = rsr::reconstruct_cloud(coarse, options.rsr, exec, observer);
     take_rsr_stats(rsr_mesh, report);
 

@@ -118,7 +118,8 @@ TEST(Collapse, OptionsAreValidatedByName) {
             collapse(s.positions, s.normals, o, {});
             FAIL() << bad;
         } catch (const InvalidOption& e) {
-            EXPECT_NE(std::string(e.what()).find("collapse-ratio"), std::string::npos);
+            EXPECT_EQ(e.option, OptionId::CollapseRatio);
+            EXPECT_EQ(std::string(e.what()).rfind("collapse_ratio must be in (0, 1]", 0), 0u);
         }
     }
     o = {};

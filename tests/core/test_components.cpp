@@ -89,7 +89,8 @@ TEST(Components, OptionsAreValidatedByName) {
         preprocess(testing::sample_sphere(100), o, {}, report);
         FAIL();
     } catch (const InvalidOption& e) {
-        EXPECT_EQ(std::string(e.what()).rfind("k ", 0), 0u);
+        EXPECT_EQ(e.option, OptionId::K);
+        EXPECT_EQ(std::string(e.what()).rfind("k must be", 0), 0u);
     }
     o = {};
     o.r = -1;

@@ -31,7 +31,7 @@ sh "$HERE/hrsr_script.sh" 2 0 > bad.mlx
 $SERVER -l "$WORK/bad_log.txt" -i "$SAMPLE" -o "$WORK/bad.ply" -s bad.mlx > "$WORK/bad_out.txt" 2>&1
 rc=$?
 check "a bad parameter fails (not an abort)" "[ $rc -ne 0 ] && [ $rc -ne 134 ] && [ $rc -ne 139 ]"
-check "the reason is in the log" "grep -q 'k must be between' '$WORK/bad_log.txt'"
+check "the reason is in the log" "grep -q 'k (neighbours) must be between' '$WORK/bad_log.txt'"
 check "nothing is written on failure" "[ ! -e '$WORK/bad.ply' ]"
 
 # Bad input (issue 7 item 6): a filter failure with the core's message in the log, meshlabserver
@@ -59,7 +59,7 @@ bad_case() { # name input script word
 bad_case two two.ply ok.mlx "at least 3 are needed"
 bad_case nan nan.ply ok.mlx "none of the 50 points has finite coordinates"
 bad_case same same.ply ok.mlx "only 1 distinct point"
-bad_case handles grid.ply bad_handles.mlx "handles must be"
+bad_case handles grid.ply bad_handles.mlx "Handles must be"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

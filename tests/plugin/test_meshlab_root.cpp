@@ -125,9 +125,9 @@ TEST_F(MeshLabRootFilter, BadParametersFailWithTheReason) {
     std::filesystem::copy_file(HRSR_SAMPLE, path("owl.ply"));
     // name=value, the reason expected
     const std::vector<std::array<std::string, 2>> cases{
-        {"k=2", "k must be between"},
-        {"handles=-5", "handles must be"},
-        {"collapse_ratio=0", "collapse-ratio must be in (0, 1]"},
+        {"k=2", "k (neighbours) must be between"},
+        {"handles=-5", "Handles must be"},
+        {"collapse_ratio=0", "Collapse ratio p must be in (0, 1]"},
         {"k=many", "parameter k: cannot use the value many"},
         {"no_such=1", "no parameter no_such=1"}};
     for (const auto& [assignment, reason] : cases) {

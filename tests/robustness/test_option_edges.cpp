@@ -59,7 +59,7 @@ TEST(OptionEdges, CollapseRatioOutsideZeroOneIsRejected) {
                          std::numeric_limits<double>::infinity()}) {
         ReconstructionOptions o;
         o.collapse.collapse_ratio = ratio;
-        expect_option_error(o, "collapse-ratio");
+        expect_option_error(o, "collapse_ratio");
     }
 }
 
@@ -77,12 +77,12 @@ TEST(OptionEdges, NegativeOrNonFiniteLMinIsRejected) {
     for (double l : {-1.0, -1e-300, std::numeric_limits<double>::quiet_NaN()}) {
         ReconstructionOptions o;
         o.reexpand.l_min = l;
-        expect_option_error(o, "l-min");
+        expect_option_error(o, "l_min");
     }
     for (double percent : {-1.0, 100.5}) {
         ReconstructionOptions o;
         o.l_min_percent = percent;
-        expect_option_error(o, "l-min");
+        expect_option_error(o, "l_min");
     }
 }
 

@@ -135,7 +135,8 @@ TEST(SurfaceCases, HalfTheNormalsFlippedIsWarnedAboutAndReestimationFixesIt) {
     for (Method m : kMethods) {
         const Attempt a = attempt(s, m);
         expect_valid_mesh(a, s, name(m));
-        EXPECT_TRUE(a.has_warning("--reestimate-normals")) << name(m);
+        EXPECT_TRUE(a.has_warning("inconsistently oriented (re-estimate them)")) << name(m);
+        EXPECT_TRUE(a.report.preprocess.input_normals_look_inconsistent) << name(m);
         EXPECT_GT(a.report.preprocess.opposed_input_normals, 300u);
         ReconstructionOptions o;
         o.rsr.preprocess.normals = NormalSource::Reestimate;
@@ -145,7 +146,8 @@ TEST(SurfaceCases, HalfTheNormalsFlippedIsWarnedAboutAndReestimationFixesIt) {
     const PointSet good = testing::sample_sphere(3000);
     const Attempt a = attempt(good, Method::Hrsr);
     EXPECT_EQ(a.report.preprocess.opposed_input_normals, 0u);
-    EXPECT_FALSE(a.has_warning("--reestimate-normals"));
+    EXPECT_FALSE(a.has_warning("re-estimate"));
+    EXPECT_FALSE(a.report.preprocess.input_normals_look_inconsistent);
 }
 
 } // namespace

@@ -142,7 +142,6 @@ CollapsedCloud collapse(const std::vector<Vec3>& positions, const std::vector<Ve
     const std::size_t n = positions.size();
     CollapsedCloud result;
     result.budget = n - std::min(n, std::size_t(std::llround(double(n) * options.collapse_ratio)));
-    if (options.max_collapses > 0) result.budget = std::min(result.budget, options.max_collapses);
 
     Collapser collapser(positions, normals);
     if (result.budget > 0) {

@@ -105,7 +105,7 @@ std::size_t improve_around(SplitMesh& m, std::uint32_t v, const ReexpandOptions&
             {m.vertex_of(far, (w + 1) % 3), m.vertex_of(far, (w + 2) % 3), far, (w + 1) % 3});
         two_ring.push_back({m.vertex_of(far, (w + 2) % 3), m.vertex_of(far, w), far, (w + 2) % 3});
     }
-    const double small_cos = std::cos(o.refinement_angle_degrees * M_PI / 180.0);
+    const double small_cos = std::cos(constants::kRefinementAngleDegrees * M_PI / 180.0);
     std::size_t flips = 0;
     for (int iteration = 0; iteration < o.refinement_iterations; ++iteration)
         for (std::vector<Edge>* list : {&one_ring, &circle, &two_ring})

@@ -97,17 +97,11 @@ public:
             unresolved = unresolved || cs.unresolved > 0 || cs.round_limit;
             mesh_.move(c, r.active_before);
         }
-        if (unresolved && options_.strict_crossings) {
-            ++stats.failed_crossings;
-            alias(r);
-            return;
-        }
         for (std::uint32_t c : candidates) { // the first copy (in id order) with a valid pair
             if (mesh_.isolated(c)) continue;
             Star& star = star_; // reused: no allocation per split
             mesh_.star(c, star);
-            const SplitChoice choice =
-                choose_split(mesh_, star, r.active_before, r.latent_before, options_);
+            const SplitChoice choice = choose_split(mesh_, star, r.active_before, r.latent_before);
             if (!choice.found) continue;
             const std::uint32_t c2 = mesh_.split(c, star, choice.a, choice.b, r.latent_before);
             vertex_node_.push_back(r.latent);
@@ -182,7 +176,7 @@ ReexpandedMesh replay_collapses(const std::vector<Vec3>& points, const std::vect
         }
         replayer.replay(r, stats);
     }
-    if (options.snap_to_input || !stats.stopped_at_l_min) replayer.snap_to_input();
+    replayer.snap_to_input();
     std::vector<CollapseRecord>().swap(records); // spent: free them before the export
     return replayer.take_result();
 }

@@ -19,7 +19,7 @@ struct Tri {
 // f(t) of E_A: the penalty below the threshold, else w · shortest edge · |π/3 − smallest angle|.
 // acos is decreasing, so the smallest angle is the acos of the largest cosine: one acos per
 // triangle instead of three (the profile's top entry), with the very same value.
-double angle_term(const Tri& t, const ReexpandOptions& o) {
+double angle_term(const Tri& t) {
     double max_cos = -1, min_edge = 1e300;
     for (int k = 0; k < 3; ++k) {
         const Vec3 u = t.p[(k + 1) % 3] - t.p[k], v = t.p[(k + 2) % 3] - t.p[k];
@@ -30,8 +30,9 @@ double angle_term(const Tri& t, const ReexpandOptions& o) {
         max_cos = std::max(max_cos, c);
     }
     const double min_angle = std::acos(max_cos);
-    if (min_angle < o.min_angle_threshold_degrees * M_PI / 180.0) return o.min_angle_penalty;
-    return o.min_angle_weight * min_edge * std::abs(M_PI / 3.0 - min_angle);
+    if (min_angle < constants::kMinAngleThresholdDegrees * M_PI / 180.0)
+        return constants::kMinAnglePenalty;
+    return constants::kMinAngleWeight * min_edge * std::abs(M_PI / 3.0 - min_angle);
 }
 
 struct Score {
@@ -59,8 +60,7 @@ struct Fan {
     std::vector<double> spoke_length; ///< |q_k − centre|, at least 1e-8 (D-2 units)
     std::vector<Joint> joint;         ///< at spoke k: wedges k−1 and k, when both are faces
     // Refills the vectors (their storage is reused: one Fan per side per thread).
-    void assign(const Vec3& centre, const std::vector<Vec3>& q, const std::vector<SFace*>& wedges,
-                const ReexpandOptions& o) {
+    void assign(const Vec3& centre, const std::vector<Vec3>& q, const std::vector<SFace*>& wedges) {
         normal.clear();
         angle.clear();
         spoke_length.clear();
@@ -69,7 +69,7 @@ struct Fan {
         for (std::size_t w = 0; w < d; ++w) {
             const Tri t{{centre, q[w], q[(w + 1) % d]}};
             normal.push_back(wedges[w] ? t.normal() : Vec3(0, 0, 0));
-            angle.push_back(wedges[w] && o.min_angle_weight > 0 ? angle_term(t, o) : 0.0);
+            angle.push_back(wedges[w] ? angle_term(t) : 0.0);
             spoke_length.push_back(std::max((q[w] - centre).Norm(), 1e-8));
         }
         joint.resize(d);
@@ -86,8 +86,7 @@ struct Fan {
 struct NewTriangles {
     std::vector<Vec3> out_normal, in_normal;
     std::vector<double> out_angle, in_angle;
-    void assign(const Vec3& p_old, const Vec3& p_new, const std::vector<Vec3>& q,
-                const ReexpandOptions& o) {
+    void assign(const Vec3& p_old, const Vec3& p_new, const std::vector<Vec3>& q) {
         out_normal.clear();
         in_normal.clear();
         out_angle.clear();
@@ -96,8 +95,8 @@ struct NewTriangles {
             const Tri t_out{{p_new, p_old, spoke}}, t_in{{p_old, p_new, spoke}};
             out_normal.push_back(t_out.normal());
             in_normal.push_back(t_in.normal());
-            out_angle.push_back(o.min_angle_weight > 0 ? angle_term(t_out, o) : 0.0);
-            in_angle.push_back(o.min_angle_weight > 0 ? angle_term(t_in, o) : 0.0);
+            out_angle.push_back(angle_term(t_out));
+            in_angle.push_back(angle_term(t_in));
         }
     }
 };
@@ -105,7 +104,7 @@ struct NewTriangles {
 // Chains of triangles around the two split vertices; consecutive ones share a spoke.
 Score score(const std::vector<SFace*>& wedges, const Fan& new_fan, const Fan& old_fan,
             const NewTriangles& spokes, std::size_t i, std::size_t j, const Vec3& p_old,
-            const Vec3& p_new, const ReexpandOptions& o) {
+            const Vec3& p_new) {
     const std::size_t d = wedges.size();
     Score s;
     auto add = [&](const Joint& joint) {
@@ -114,8 +113,7 @@ Score score(const std::vector<SFace*>& wedges, const Fan& new_fan, const Fan& ol
     };
     const Vec3& n_out = spokes.out_normal[j];
     const Vec3& n_in = spokes.in_normal[i];
-    const bool with_angles = o.min_angle_weight > 0;
-    if (with_angles) s.energy += spokes.out_angle[j] + spokes.in_angle[i];
+    s.energy += spokes.out_angle[j] + spokes.in_angle[i];
     add(Joint(n_in, n_out, std::max((p_new - p_old).Norm(), 1e-8))); // D-18: the true shared edge
     // side(from, to): the wedges from spoke `from` counter-clockwise to spoke `to`, between the
     // new triangles with normals `first` (at `from`) and `last` (at `to`).
@@ -127,7 +125,7 @@ Score score(const std::vector<SFace*>& wedges, const Fan& new_fan, const Fan& ol
                 have_previous = false;
                 continue;
             }
-            if (with_angles) s.energy += fan.angle[w];
+            s.energy += fan.angle[w];
             if (have_previous)
                 add(w == from ? Joint(first, fan.normal[w], fan.spoke_length[w]) : fan.joint[w]);
             if ((w + 1) % d == to) add(Joint(fan.normal[w], last, fan.spoke_length[to]));
@@ -142,7 +140,7 @@ Score score(const std::vector<SFace*>& wedges, const Fan& new_fan, const Fan& ol
 } // namespace
 
 SplitChoice choose_split(const SplitMesh& mesh, const Star& star, const Vec3& p_old,
-                         const Vec3& p_new, const ReexpandOptions& options) {
+                         const Vec3& p_new) {
     const std::size_t d = star.neighbours.size();
     SplitChoice best, best_guarded;
     if (d < 2) return best;
@@ -152,14 +150,13 @@ SplitChoice choose_split(const SplitMesh& mesh, const Star& star, const Vec3& p_
     thread_local NewTriangles spokes;
     q.clear();
     for (std::uint32_t v : star.neighbours) q.push_back(mesh.position(v));
-    new_fan.assign(p_new, q, star.wedges, options);
-    old_fan.assign(p_old, q, star.wedges, options);
-    spokes.assign(p_old, p_new, q, options);
+    new_fan.assign(p_new, q, star.wedges);
+    old_fan.assign(p_old, q, star.wedges);
+    spokes.assign(p_old, p_new, q);
     for (std::size_t i = 0; i < d; ++i)
         for (std::size_t j = 0; j < d; ++j) {
             if (i == j) continue;
-            const Score s =
-                score(star.wedges, new_fan, old_fan, spokes, i, j, p_old, p_new, options);
+            const Score s = score(star.wedges, new_fan, old_fan, spokes, i, j, p_old, p_new);
             const SplitChoice candidate{true, star.neighbours[i], star.neighbours[j], s.energy};
             if (!best.found || s.energy < best.energy) best = candidate;
             if (s.worst_dihedral < constants::kDihedralGuard &&

@@ -13,9 +13,10 @@ struct SplitChoice {
 };
 
 /// Evaluates every ordered pair of spokes of c (whose star is given) for c at p_old and a new
-/// vertex at p_new by E = E_D + w · E_A and applies the dihedral guard. Wedges that are not faces
-/// (the boundary gap) are not scored (D-18). Ties go to the first pair in circulation order (D-10).
+/// vertex at p_new by E = E_D + w · E_A (w = constants::kMinAngleWeight) and applies the dihedral
+/// guard. Wedges that are not faces (the boundary gap) are not scored (D-18). Ties go to the first
+/// pair in circulation order (D-10).
 SplitChoice choose_split(const SplitMesh& mesh, const Star& star, const Vec3& p_old,
-                         const Vec3& p_new, const ReexpandOptions& options);
+                         const Vec3& p_new);
 
 } // namespace hrsr::reexpand

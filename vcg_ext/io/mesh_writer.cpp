@@ -143,10 +143,10 @@ MeshFormat mesh_format_of(const std::string& path) {
     if (ext == ".ply") return MeshFormat::Ply;
     if (ext == ".obj") return MeshFormat::Obj;
     if (ext == ".off") return MeshFormat::Off;
-    throw InvalidOption(
-        "output " + path + ": " +
-        (ext.empty() ? std::string("no file extension") : "unknown extension " + ext) +
-        " (the format is chosen by it: .ply, .obj or .off)");
+    throw InvalidOption(OptionId::Output, path + ": " +
+                                              (ext.empty() ? std::string("no file extension")
+                                                           : "unknown extension " + ext) +
+                                              " (the format is chosen by it: .ply, .obj or .off)");
 }
 
 std::vector<std::string> write_mesh(const std::string& path, const std::vector<Vec3>& positions,

@@ -31,8 +31,8 @@ void append(PointSet& all, PointSet&& next, const std::string& first, const std:
     if (!same_layout(all, next))
         detail::fail(path, "its per-point attributes (" + attribute_list(next) +
                                ") differ from those of " + first + " (" + attribute_list(all) +
-                               "); files read together must have the same ones (or use "
-                               "--no-attributes)");
+                               "); files read together must have the same ones (or be read "
+                               "without attributes)");
     all.positions.insert(all.positions.end(), next.positions.begin(), next.positions.end());
     all.normals.insert(all.normals.end(), next.normals.begin(), next.normals.end());
     for (std::size_t j = 0; j < all.attributes.size(); ++j)

@@ -78,10 +78,11 @@ void check_input_orientation(const KnnIndex& index, const std::vector<Vec3>& nor
     if (double(report.opposed_input_normals) <=
         constants::kOpposedNormalsWarningFraction * double(normals.size()))
         return;
+    report.input_normals_look_inconsistent = true;
     report.warnings.push_back(
         std::to_string(report.opposed_input_normals) + " of " + std::to_string(normals.size()) +
         " input normals point away from their nearest neighbour's: they look inconsistently "
-        "oriented (re-estimate them: --reestimate-normals), or two sheets are closer than the "
+        "oriented (re-estimate them), or two sheets are closer than the "
         "point spacing");
 }
 

@@ -40,6 +40,8 @@ struct PreprocessReport {
         0; ///< points whose PCA normal was undefined and copied from the nearest valid one
     std::size_t opposed_input_normals =
         0; ///< input normals opposed to their nearest neighbour's (a warning above 10 %)
+    /// That warning was given: each front end adds how to re-estimate normals in its own terms.
+    bool input_normals_look_inconsistent = false;
     std::size_t orientation_flips = 0; ///< estimated normals flipped by the MST propagation
     std::size_t orientation_components =
         0; ///< connected pieces oriented independently (one sign each)
