@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Every citation in the repository resolves inside it (run as the ctest `citations`).
 
-Checked, in the code (vcg_ext/, apps/, filter_hrsr/, fuzz/, bench/, scripts/), tests/ (except
-tests/data/), docs/ and the README:
+Checked, in the code (vcg_ext/, apps/, filter_hrsr/, fuzz/, bench/, scripts/, .ci/), tests/
+(except tests/data/), docs/, the README and data/README.md:
 
 * "§4.6", "§8.3", "§4.1–4.6", "Appendix A.1": a heading of docs/ALGORITHM.md with that number
   ("### 4.6 ...", "## Appendix A ..."); "MESHLAB.md §1.3", "VCGLIB.md §6": a heading of that file
@@ -22,13 +22,13 @@ import os
 import re
 import sys
 
-SCANNED_DIRS = ["vcg_ext", "apps", "filter_hrsr", "fuzz", "bench", "scripts", "tests", "docs"]
-SCANNED_ROOT_FILES = ["README.md", "CMakeLists.txt"]
-SKIPPED_DIRS = {".git", ".deps", "data", "__pycache__"}  # tests/data: fuzz seeds, fixtures
+SCANNED_DIRS = ["vcg_ext", "apps", "filter_hrsr", "fuzz", "bench", "scripts", "tests", "docs", ".ci"]
+SCANNED_ROOT_FILES = ["README.md", "CMakeLists.txt", "data/README.md"]
+SKIPPED_DIRS = {".git", ".deps", "__pycache__", os.path.join("tests", "data")}  # seeds, fixtures
 TEXT_SUFFIXES = (".h", ".cpp", ".c", ".py", ".sh", ".md", ".txt", ".cmake", ".mlx")
 # Issue numbers are looked up only where code and tests cite them; the status notes in docs/
 # and the README's history name issues as history, not as requirements.
-ISSUE_CITING_DIRS = ("vcg_ext", "apps", "filter_hrsr", "fuzz", "bench", "scripts", "tests")
+ISSUE_CITING_DIRS = ("vcg_ext", "apps", "filter_hrsr", "fuzz", "bench", "scripts", "tests", ".ci")
 
 SELF = os.path.basename(__file__)
 # Written in two pieces so that this file does not match itself.
@@ -79,11 +79,14 @@ def scanned_files(root):
             yield name
     for top in SCANNED_DIRS:
         for dirpath, dirnames, filenames in os.walk(os.path.join(root, top)):
-            dirnames[:] = sorted(d for d in dirnames if d not in SKIPPED_DIRS)
+            rel_dir = os.path.relpath(dirpath, root)
+            dirnames[:] = sorted(d for d in dirnames
+                                 if d not in SKIPPED_DIRS
+                                 and os.path.join(rel_dir, d) not in SKIPPED_DIRS)
             for name in sorted(filenames):
                 if name == SELF:
                     continue  # its self-test plants bad citations on purpose
-                if name.endswith(TEXT_SUFFIXES) or name == "CMakeLists.txt":
+                if name.endswith(TEXT_SUFFIXES) or name in ("CMakeLists.txt", "run"):
                     yield os.path.relpath(os.path.join(dirpath, name), root)
 
 
@@ -168,6 +171,7 @@ def self_test():
                          "// VCGLIB.md §6\n// MESHLAB.md §1.4\n// Appendix B\n// NOPE.md\n",
         "tests/bad.cpp": "// Issue 8, item 2\n",
         "README.md": "issue 8 is history here, not a citation\n",
+        "tests/data/fixture.h": "// §9.9, D-99: test data is not read\n",
     }
     expected = {
         "vcg_ext/bad.h:1: §4.7 has no heading in docs/ALGORITHM.md",
