@@ -1,6 +1,6 @@
 #!/bin/sh
 # A private MeshLab prefix that loads our plugin next to the system ones (MeshLab 2020.09 only
-# looks in <dir of the executable>/../lib/<multiarch>/meshlab/plugins; ../shared/docs/MESHLAB.md §1.4).
+# looks in <dir of the executable>/../lib/<multiarch>/meshlab/plugins; docs/MESHLAB.md §1.4).
 # usage: make_prefix.sh PLUGIN.so PREFIX   (PLUGIN "-": only the system plugins, e.g. to install
 # ours into PREFIX with `DESTDIR=... cmake --install`)
 set -eu

@@ -1,7 +1,7 @@
 // Reading point clouds from files: PLY (ascii, binary little/big endian), XYZ text, OBJ v/vn,
 // Leica PTS, PCL PCD, LAS/LAZ.
 // Our own small readers: precise error messages, no asserts, no aborts (the bundled vcglib OBJ
-// importer aborts on common files; see ../shared/docs/VCGLIB.md §6).
+// importer aborts on common files; see docs/VCGLIB.md §6).
 #pragma once
 
 #include "point_set.h"
