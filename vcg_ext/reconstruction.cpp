@@ -2,9 +2,9 @@
 
 #include "errors.h"
 #include "hrsr/collapse.h"
-#include "hrsr/fold_repair.h"
 #include "hrsr/unsampled_triangles.h"
 #include "mesh/fans.h"
+#include "mesh/fold_repair.h"
 #include "mesh/small_holes_fill.h"
 #include "preprocess/components.h"
 #include "preprocess/pca_normals.h"

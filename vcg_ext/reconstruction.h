@@ -1,8 +1,8 @@
 // The library's entry point: point set in, triangle mesh and report out.
 #pragma once
 
-#include "hrsr/fold_repair.h"
 #include "hrsr/reexpansion.h"
+#include "mesh/fold_repair.h"
 #include "mesh/mesh_stats.h"
 #include "options.h"
 #include "parallel.h"

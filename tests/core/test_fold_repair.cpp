@@ -1,6 +1,6 @@
 // D-26: the flips that undo folds, and the triangle test they share with `hrsr check`.
-#include "hrsr/fold_repair.h"
 #include "io/point_set_reader.h"
+#include "mesh/fold_repair.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/self_intersections.h"
 #include "mesh/triangle_intersection.h"

@@ -17,8 +17,8 @@ namespace {
 class SplitChecker : public ReexpansionObserver {
 public:
     explicit SplitChecker(std::size_t full_check_every) : every_(full_check_every) {}
-    void split_done(const reexpand::SplitMesh& mesh, std::uint32_t, std::uint32_t, const Vec3&,
-                    const Vec3&, std::size_t removed, bool unresolved) override {
+    void split_done(const SplitMesh& mesh, std::uint32_t, std::uint32_t, const Vec3&, const Vec3&,
+                    std::size_t removed, bool unresolved) override {
         ++splits_;
         unresolved_ += unresolved ? 1 : 0;
         removed_ += removed;

@@ -1,5 +1,5 @@
-#include "hrsr/split_mesh.h"
 #include "mesh/mesh_stats.h"
+#include "mesh/split_mesh.h"
 
 #include <vcg/complex/algorithms/clean.h>
 

@@ -3,7 +3,7 @@
 // triangle is removed.
 #pragma once
 
-#include "hrsr/split_mesh.h"
+#include "mesh/split_mesh.h"
 
 namespace hrsr::reexpand {
 

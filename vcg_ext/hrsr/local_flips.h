@@ -1,7 +1,7 @@
 // Local improvement after a vertex split (ALGORITHM.md §8.6).
 #pragma once
 
-#include "hrsr/split_mesh.h"
+#include "mesh/split_mesh.h"
 #include "options.h"
 
 namespace hrsr::reexpand {

@@ -3,7 +3,7 @@
 #include "hrsr/crossings.h"
 #include "hrsr/local_flips.h"
 #include "hrsr/split_choice.h"
-#include "hrsr/split_mesh.h"
+#include "mesh/split_mesh.h"
 
 #include <algorithm>
 

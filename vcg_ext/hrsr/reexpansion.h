@@ -2,7 +2,7 @@
 #pragma once
 
 #include "hrsr/collapse.h"
-#include "hrsr/split_mesh.h"
+#include "mesh/split_mesh.h"
 #include "mesh/triangle_mesh.h"
 #include "options.h"
 #include "parallel.h"
@@ -37,9 +37,9 @@ public:
     /// c was made room for (crossings resolved: `unresolved` left) and moved to x_a; the split
     /// created c2 at x_b. `removed` boundary triangles were removed for it (each changes
     /// (V, E, F) by (0, −1, −1)); the local flips have run.
-    virtual void split_done(const reexpand::SplitMesh& /*mesh*/, std::uint32_t /*c*/,
-                            std::uint32_t /*c2*/, const Vec3& /*x_a*/, const Vec3& /*x_b*/,
-                            std::size_t /*removed*/, bool /*unresolved*/) {}
+    virtual void split_done(const SplitMesh& /*mesh*/, std::uint32_t /*c*/, std::uint32_t /*c2*/,
+                            const Vec3& /*x_a*/, const Vec3& /*x_b*/, std::size_t /*removed*/,
+                            bool /*unresolved*/) {}
 };
 
 /// Replays `records` backwards on the coarse mesh. `coarse_vertex_node[v]` is the node of each

@@ -1,7 +1,7 @@
 // Which two spokes a vertex split should use (ALGORITHM.md §8.4, D-18).
 #pragma once
 
-#include "hrsr/split_mesh.h"
+#include "mesh/split_mesh.h"
 #include "options.h"
 
 namespace hrsr::reexpand {

@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace hrsr::reexpand {
+namespace hrsr {
 
 class SVertex;
 class SFace;
@@ -109,4 +109,4 @@ private:
     std::vector<SFace*> face_of_; ///< per vertex: one incident face (null if isolated)
 };
 
-} // namespace hrsr::reexpand
+} // namespace hrsr

@@ -1,4 +1,4 @@
-#include "hrsr/split_mesh.h"
+#include "mesh/split_mesh.h"
 
 #include <vcg/complex/algorithms/update/topology.h>
 #include <vcg/simplex/face/topology.h>
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-namespace hrsr::reexpand {
+namespace hrsr {
 
 namespace {
 
@@ -362,4 +362,4 @@ std::vector<SFace*> SplitMesh::live_faces() {
     return out;
 }
 
-} // namespace hrsr::reexpand
+} // namespace hrsr

@@ -1,6 +1,6 @@
-#include "hrsr/fold_repair.h"
+#include "mesh/fold_repair.h"
 
-#include "hrsr/split_mesh.h"
+#include "mesh/split_mesh.h"
 #include "mesh/triangle_grid.h"
 #include "mesh/welding.h"
 
@@ -14,9 +14,6 @@
 namespace hrsr {
 
 namespace {
-
-using reexpand::SFace;
-using reexpand::SplitMesh;
 
 // How far from a pair's corners the region reaches: a flip joins corners up to two rings away,
 // and a later round works around the corners of earlier flips.
@@ -324,7 +321,7 @@ private:
     std::vector<std::uint8_t> intersecting_; ///< per face: in a pair at the start of the round
     /// Flipped faces by the cells their boxes covered after each flip.
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> flipped_in_cell_;
-    reexpand::Star star_;
+    Star star_;
 };
 
 } // namespace
