@@ -22,7 +22,7 @@ PACKAGES=(
   libeigen3-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   # PCD binary_compressed blocks (LZF)
   liblzf-dev
-  clang-format
+  clang-format clang-tidy
   # sanitizer and fuzz stage (scripts/test_sanitizers.sh): libFuzzer and OpenMP for clang
   clang-14 libclang-rt-14-dev libomp-14-dev
   # the MeshLab plugin: the installed MeshLab, and what its headers include

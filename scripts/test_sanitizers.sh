@@ -20,7 +20,7 @@ OPT=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1
 # Not under the sanitizers: no plugin, no format check; real scans and the large analytic
 # surfaces (minutes under ASan); determinism across threads and the cancellation-timing test
 # (they rerun code the other tests cover; the normal build runs them all).
-SLOW='clang_format|meshlab_server|RealScans|Analytic/HrsrSurface|Analytic/RsrSurface'
+SLOW='clang_format|clang_tidy|meshlab_server|RealScans|Analytic/HrsrSurface|Analytic/RsrSurface'
 SLOW+='|Hrsr.VertexCountFallsAsLMinGrows|SameMeshForOneAndTwoThreads|SameResultForOneAndTwoThreads'
 SLOW+='|SameBytesForRepeatedRuns|CancellationPointsAreNeverFarApart'
 start=$(date +%s)
@@ -42,8 +42,7 @@ fi
 [[ " $STAGES " == *" fuzz "* ]] || exit 0
 tested=$(date +%s)
 
-# 2. libFuzzer. Warnings are not errors here: the strict build is GCC's (clang-14 also reports
-# an unused private field, EarCutter::geometry_ in vcg_ext/rsr/ear_triangulation.cpp).
+# 2. libFuzzer. Warnings are not errors here: the strict build is GCC's.
 CC=clang-14 CXX=clang++-14 cmake -S "$ROOT" -B "$FUZZ" "${OPT[@]}" \
   -DHRSR_BUILD_FUZZERS=ON -DHRSR_BUILD_APPS=OFF -DHRSR_BUILD_TESTS=OFF -DHRSR_BUILD_PLUGIN=OFF \
   -DHRSR_WARNINGS_AS_ERRORS=OFF \

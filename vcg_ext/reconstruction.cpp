@@ -214,6 +214,27 @@ std::vector<std::uint32_t> tree_roots(std::size_t nodes,
     return root;
 }
 
+// §8.7: each point that is not its own vertex is merged into another's (l_min, failed splits),
+// dropped with a small coarse component, or left out of every triangle.
+void record_fates(const PreparedCloud& cloud, const std::vector<std::uint32_t>& alias,
+                  const std::vector<std::uint32_t>& root,
+                  const std::vector<std::uint32_t>& dropped_nodes, ReconstructionReport& report) {
+    std::vector<std::uint8_t> dropped_root(cloud.size(), 0);
+    for (std::uint32_t node : dropped_nodes) dropped_root[node] = 1;
+    for (std::uint32_t node = 0; node < cloud.size(); ++node) {
+        if (alias[node] == node) continue;
+        if (alias[node] != ReexpandedMesh::kNoNode)
+            ++report.merged_points;
+        else if (dropped_root[root[node]])
+            report.dropped_small_coarse_component.push_back(cloud.input_index[node]);
+        else
+            report.not_in_triangle.push_back(cloud.input_index[node]);
+    }
+    std::sort(report.not_in_triangle.begin(), report.not_in_triangle.end());
+    std::sort(report.dropped_small_coarse_component.begin(),
+              report.dropped_small_coarse_component.end());
+}
+
 } // namespace
 
 Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
@@ -308,20 +329,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     report.unsampled_triangles_removed =
         remove_unsampled_triangles(fine.triangles, cloud.positions, fine.vertex_node,
                                    rsr::candidate_rank(pre.k, cloud.size()), exec);
-    std::vector<std::uint8_t> dropped_root(cloud.size(), 0);
-    for (std::uint32_t node : dropped_nodes) dropped_root[node] = 1;
-    for (std::uint32_t node = 0; node < cloud.size(); ++node) {
-        if (fine.alias[node] == node) continue;
-        if (fine.alias[node] != ReexpandedMesh::kNoNode)
-            ++report.merged_points;
-        else if (dropped_root[root[node]])
-            report.dropped_small_coarse_component.push_back(cloud.input_index[node]);
-        else
-            report.not_in_triangle.push_back(cloud.input_index[node]);
-    }
-    std::sort(report.not_in_triangle.begin(), report.not_in_triangle.end());
-    std::sort(report.dropped_small_coarse_component.begin(),
-              report.dropped_small_coarse_component.end());
+    record_fates(cloud, fine.alias, root, dropped_nodes, report);
     report.small_holes_filled = fill_small_holes(fine.triangles, cloud.positions, fine.vertex_node);
     // The re-expanded mesh is manifold by construction; the fan split is a safety net.
     CompactMesh out = compact(fine.vertex_node.size(), std::move(fine.triangles));

@@ -52,7 +52,7 @@ void RsrState::run(RsrPhase phase) {
                             triangles, roots, nullptr);
         break;
     case RsrPhase::Ears:
-        rsr::triangulate_ears(*rotation, *faces, *geometry, cloud, graph.max_length,
+        rsr::triangulate_ears(*rotation, *faces, cloud, graph.max_length,
                               options.preprocess.distance, roots, triangles, nullptr);
         rsr::close_small_holes(*rotation, *faces, triangles, nullptr);
         break;

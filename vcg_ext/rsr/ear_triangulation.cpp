@@ -20,11 +20,11 @@ struct Ear {
 
 class EarCutter {
 public:
-    EarCutter(RotationSystem& rs, Faces& faces, GeometryCheck& geometry,
-              const ComponentCloud& cloud, const std::vector<double>& max_length, DistanceMode mode,
+    EarCutter(RotationSystem& rs, Faces& faces, const ComponentCloud& cloud,
+              const std::vector<double>& max_length, DistanceMode mode,
               std::vector<LocalTriangle>& triangles, Observer* observer)
-        : rs_(rs), faces_(faces), geometry_(geometry), cloud_(cloud), max_length_(max_length),
-          mode_(mode), triangles_(triangles), observer_(observer) {}
+        : rs_(rs), faces_(faces), cloud_(cloud), max_length_(max_length), mode_(mode),
+          triangles_(triangles), observer_(observer) {}
 
     // Pushes every ear with apex i whose cut is short enough.
     void explore(std::uint32_t i) {
@@ -116,7 +116,6 @@ private:
 
     RotationSystem& rs_;
     Faces& faces_;
-    GeometryCheck& geometry_;
     const ComponentCloud& cloud_;
     const std::vector<double>& max_length_;
     DistanceMode mode_;
@@ -127,11 +126,11 @@ private:
 
 } // namespace
 
-EarStats triangulate_ears(RotationSystem& rs, Faces& faces, GeometryCheck& geometry,
-                          const ComponentCloud& cloud, const std::vector<double>& max_length,
-                          DistanceMode mode, const std::vector<std::uint32_t>& roots,
+EarStats triangulate_ears(RotationSystem& rs, Faces& faces, const ComponentCloud& cloud,
+                          const std::vector<double>& max_length, DistanceMode mode,
+                          const std::vector<std::uint32_t>& roots,
                           std::vector<LocalTriangle>& triangles, Observer* observer) {
-    EarCutter cutter(rs, faces, geometry, cloud, max_length, mode, triangles, observer);
+    EarCutter cutter(rs, faces, cloud, max_length, mode, triangles, observer);
     const std::size_t n = rs.vertex_count();
     std::vector<std::uint8_t> to_visit(n, 1);
     for (std::uint32_t r : roots) {

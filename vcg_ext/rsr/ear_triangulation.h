@@ -19,10 +19,10 @@ struct EarStats {
 
 /// `lengths_cloud` gives the positions/normals for ear scores (those of the candidate graph);
 /// `max_length` bounds them. Handle roots are explored first. Like GEL's, the ears have no
-/// geometric test: `geometry` is kept by the cutter but not consulted yet (an earlier note said
-/// otherwise; see docs/STATUS.md). Where a crack stays open because of a genus limit (D-13) the
-/// caller skips the ears, which would bridge it with overlapping triangles.
-EarStats triangulate_ears(RotationSystem& rotation, Faces& faces, GeometryCheck& geometry,
+/// geometric test (the face split's check is not consulted; docs/STATUS.md). Where a crack stays
+/// open because of a genus limit (D-13) the caller skips the ears, which would bridge it with
+/// overlapping triangles.
+EarStats triangulate_ears(RotationSystem& rotation, Faces& faces,
                           const ComponentCloud& lengths_cloud,
                           const std::vector<double>& max_length, DistanceMode mode,
                           const std::vector<std::uint32_t>& roots,

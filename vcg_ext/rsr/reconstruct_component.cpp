@@ -82,8 +82,8 @@ std::vector<LocalTriangle> reconstruct_component(const ComponentCloud& cloud,
     // handles = 0; none without ears). That crack stays a hole, as in GEL for genus 0.
     if (!stats.handles.limited) {
         begin(exec, "ear triangulation");
-        stats.ears = triangulate_ears(rotation, faces, geometry, cloud, graph.max_length,
-                                      pre.distance, roots, triangles, observer);
+        stats.ears = triangulate_ears(rotation, faces, cloud, graph.max_length, pre.distance, roots,
+                                      triangles, observer);
     }
     stats.small_holes = close_small_holes(rotation, faces, triangles, observer);
     clock.lap("ear triangulation");
