@@ -83,6 +83,18 @@ inline PointSet write_sample_with_attributes(const std::string& file) {
     return cloud;
 }
 
+/// Writes the sample to `file` with a 16-bit colour (ushort red, green, blue), as hrsr writes
+/// the colour of LAS files.
+inline void write_sample_with_ushort_colour(const std::string& file) {
+    PointSet cloud = io::read_point_set(HRSR_SAMPLE);
+    for (const char* name : {"red", "green", "blue"}) {
+        PointAttribute a(name, ScalarType::UInt16);
+        for (std::size_t i = 0; i < cloud.size(); ++i) a.append(double(256 * (i % 256)));
+        cloud.attributes.push_back(a);
+    }
+    io::write_ply(file, cloud.positions, {}, {}, cloud.precision, cloud.attributes);
+}
+
 /// The attribute called `name` of `cloud` (a failed expectation and null if there is none).
 inline const PointAttribute* attribute(const PointSet& cloud, const std::string& name) {
     for (const PointAttribute& a : cloud.attributes)

@@ -259,6 +259,23 @@ TEST_F(MeshLabFilter, MeshVerticesCarryTheLayersCustomAttributes) {
     EXPECT_EQ(differ, 0u) << "of " << mesh.size() << " vertices";
 }
 
+TEST_F(MeshLabFilter, SixteenBitColourDoesNotReachMeshLab) {
+    // MeshLab's PLY importer (vcglib's) reads red/green/blue as uchar only: with a ushort colour
+    // (as hrsr writes for 16-bit LAS colour) 2020.09 has only its default white. The README
+    // says so; this fails when MeshLab starts reading it.
+    testing::write_sample_with_ushort_colour(path("cloud.ply"));
+    const Outcome r = run_script(testing::mlx(testing::hrsr_filter()),
+                                 "-i " + path("cloud.ply") + " -o " + path("mesh.ply") + " -m vc");
+    ASSERT_EQ(r.exit_code, 0) << r.out << log();
+    const PointSet mesh = io::read_point_set(path("mesh.ply"));
+    ASSERT_GE(mesh.size(), 9000u);
+    for (const char* name : {"red", "green", "blue"}) {
+        const PointAttribute* a = testing::attribute(mesh, name);
+        ASSERT_TRUE(a);
+        for (std::size_t k = 0; k < mesh.size(); ++k) ASSERT_EQ(a->value(k), 255) << name << k;
+    }
+}
+
 TEST_F(MeshLabFilter, ComparisonScriptSavesHrsrBallPivotingAndPoisson) {
     ASSERT_EQ(
         hrsr("normals " + std::string(HRSR_SAMPLE) + " -o " + path("cloud.ply") + " -q").exit_code,

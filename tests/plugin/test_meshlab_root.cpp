@@ -220,6 +220,18 @@ TEST_F(MeshLabRootFilter, MeshVerticesCarryTheLayersCustomAttributes) {
     EXPECT_EQ(differ, 0u) << "of " << mesh.size() << " vertices";
 }
 
+TEST_F(MeshLabRootFilter, SixteenBitColourDoesNotReachMeshLab) {
+    // MeshLab's PLY importer (vcglib's) reads red/green/blue as uchar only: a ushort colour (as
+    // hrsr writes for 16-bit LAS colour) leaves the layer without colour. The README says so;
+    // this fails when a MeshLab version starts reading it.
+    testing::write_sample_with_ushort_colour(path("cloud.ply"));
+    const Outcome r = apply("cloud.ply", "--attributes");
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    const PointSet mesh = io::read_point_set(path("mesh.ply"));
+    ASSERT_GE(mesh.size(), 9000u);
+    EXPECT_TRUE(mesh.attributes.empty()) << mesh.attributes.front().name;
+}
+
 TEST_F(MeshLabRootFilter, InstallPutsThePluginWhereThisMeshLabLoadsIt) {
     // a real install into the root (it is ours), removed again by the manifest
     const Outcome install = root_.run("cmake", "--install /hrsr/build");
