@@ -3,6 +3,7 @@
 #include <vcg/complex/allocate.h>
 
 #include <cstdint>
+#include <set>
 #include <typeindex>
 
 namespace hrsr::plugin {
@@ -50,7 +51,9 @@ std::vector<std::string> copy_vertex_data(MeshModel& in, const std::vector<CVert
     if (has & MeshModel::MM_VERTTEXCOORD) ml_copy_textures(in, out); // what T().N() refers to
 
     std::vector<std::string> left_out;
-    for (const vcg::PointerToAttribute& a : in.cm.vert_attr) {
+    // a copy: vcglib's look-up may re-insert an attribute into the set (padded ones)
+    const std::set<vcg::PointerToAttribute> attributes = in.cm.vert_attr;
+    for (const vcg::PointerToAttribute& a : attributes) {
         if (a._name.empty()) continue; // a filter's temporary attribute, not the user's
         // every scalar, point and colour type vcglib and MeshLab's filters and importers use
         const bool copied =
