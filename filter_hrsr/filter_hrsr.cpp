@@ -2,6 +2,7 @@
 
 #include "layers.h"
 #include "parameters.h"
+#include "vertex_data.h"
 
 #include <algorithm>
 #include <chrono>
@@ -54,6 +55,11 @@ void FilterHrsrPlugin::run(MeshDocument& md, const RichParameterList& par, vcg::
 
     MeshModel* out = md.addNewMesh("", "HRsR mesh", false);
     hrsr::plugin::fill_layer(points, mesh, out->cm);
+    for (const std::string& name :
+         hrsr::plugin::copy_vertex_data(*input, hrsr::plugin::vertex_sources(points, mesh), *out))
+        log_message("HRsR: the per-vertex attribute %s is not carried to the mesh: its type is "
+                    "not one the filter knows",
+                    name.c_str());
     md.setCurrentMesh(out->id());
     for (const std::string& w : report.preprocess.warnings)
         log_message("HRsR warning: %s", w.c_str());

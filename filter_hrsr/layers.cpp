@@ -32,6 +32,13 @@ void fill_layer(const LayerPoints& in, const Reconstruction& mesh, CMeshO& out) 
     vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(out); // keeps the per-vertex normals
 }
 
+std::vector<CVertexO*> vertex_sources(const LayerPoints& in, const Reconstruction& mesh) {
+    std::vector<CVertexO*> sources;
+    sources.reserve(mesh.vertex_input_index.size());
+    for (std::uint32_t i : mesh.vertex_input_index) sources.push_back(in.vertices[i]);
+    return sources;
+}
+
 std::size_t select_dropped(LayerPoints& in, const Reconstruction& mesh,
                            const ReconstructionReport& report) {
     std::vector<char> is_vertex(in.vertices.size(), 0);

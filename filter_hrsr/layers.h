@@ -21,6 +21,9 @@ LayerPoints points_of(CMeshO& layer);
 /// per-vertex normals, triangles, bounding box and face normals.
 void fill_layer(const LayerPoints& in, const Reconstruction& mesh, CMeshO& out);
 
+/// The input layer's vertex each mesh vertex is made from (entry k for mesh vertex k).
+std::vector<CVertexO*> vertex_sources(const LayerPoints& in, const Reconstruction& mesh);
+
 /// Selects the input points that no mesh vertex represents (neither a vertex nor an exact
 /// duplicate merged into one) and clears the selection of the others; returns how many are
 /// selected, which is input points − referenced input points of the report.

@@ -30,6 +30,15 @@ inline void ml_update_box_and_normals(MeshModel& m) {
 #endif
 }
 
+/// `out` gets the texture list of `in` in the same order (texture coordinates refer to it by
+/// index) and, from 2022.02 on, where MeshModel holds the images, the images too.
+inline void ml_copy_textures(const MeshModel& in, MeshModel& out) {
+    out.cm.textures = in.cm.textures;
+#if HRSR_ML_API >= 2022
+    for (const auto& [name, image] : in.getTextures()) out.addTexture(name, image);
+#endif
+}
+
 /// A parameter of type P (constructor arguments `args`); `advanced` ones are shown in the
 /// dialog's advanced group from 2022.02 on (2020.09 has no such group).
 template <typename P, typename... Args>

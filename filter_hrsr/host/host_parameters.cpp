@@ -48,12 +48,29 @@ void print_log(const GLLogStream& log) {
         std::cout << "log: " << text.toStdString() << "\n";
 }
 
-void save_with_normals(PluginManager& pm, MeshModel& m, const QString& file, vcg::CallBackPos* cb) {
+void save_with_normals(PluginManager& pm, MeshModel& m, const QString& file, vcg::CallBackPos* cb,
+                       bool everything) {
     const QString format = QFileInfo(file).suffix().toLower();
     IOPlugin* io = pm.outputMeshPlugin(format);
     if (io == nullptr) throw MLException("no plugin saves ." + format);
-    const RichParameterList par = io->initSaveParameter(format, m);
-    io->save(format, file, m, vcg::tri::io::Mask::IOM_VERTNORMAL, par, cb);
+    RichParameterList par = io->initSaveParameter(format, m);
+    int mask = vcg::tri::io::Mask::IOM_VERTNORMAL;
+    if (everything) {
+        using vcg::tri::io::Mask;
+        for (const auto& [component, io_bit] :
+             {std::pair{MeshModel::MM_VERTCOLOR, Mask::IOM_VERTCOLOR},
+              {MeshModel::MM_VERTQUALITY, Mask::IOM_VERTQUALITY},
+              {MeshModel::MM_VERTRADIUS, Mask::IOM_VERTRADIUS},
+              {MeshModel::MM_VERTTEXCOORD, Mask::IOM_VERTTEXCOORD}})
+            if (m.hasDataMask(component)) mask |= io_bit;
+        // the PLY exporter offers each custom per-vertex attribute as a check box, named
+        // "__CA_VS__<name>" (scalar) or "__CA_VP__<name>" (point) since 2022.02
+        QStringList attributes;
+        for (const RichParameter& p : par)
+            if (p.name().startsWith("__CA_V") && p.value().isBool()) attributes << p.name();
+        for (const QString& name : attributes) par.setValue(name, BoolValue(true));
+    }
+    io->save(format, file, m, mask, par, cb);
 }
 
 } // namespace hrsr::host

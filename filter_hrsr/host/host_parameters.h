@@ -19,7 +19,10 @@ void set_parameter(RichParameterList& par, const QString& assignment);
 void print_log(const GLLogStream& log);
 
 /// Saves `m` to `file` (format from its suffix) with vertex normals only, like meshlabserver's
-/// `-m vn`, so that a PLY is written the way the CLI writes it.
-void save_with_normals(PluginManager& pm, MeshModel& m, const QString& file, vcg::CallBackPos* cb);
+/// `-m vn`, so that a PLY is written the way the CLI writes it; with `everything`, also the
+/// per-vertex colour, quality, radius and texture coordinates the layer has and every custom
+/// per-vertex attribute the format's exporter offers to save.
+void save_with_normals(PluginManager& pm, MeshModel& m, const QString& file, vcg::CallBackPos* cb,
+                       bool everything = false);
 
 } // namespace hrsr::host

@@ -1,11 +1,13 @@
 #!/bin/sh
 # Runs INSIDE a root (scripts/root/screenshots.sh copies it there and installs the plugin first):
 # MeshLab's GUI under a private Xvfb, driven by xdotool, captured by ImageMagick's `import`.
-# usage: gui_screenshots.sh CLOUD OUT_PREFIX
+# usage: gui_screenshots.sh CLOUD OUT_PREFIX [SECONDS]
 #   OUT_PREFIX01_filter_dialog.png  the filter dialog on CLOUD
 #   OUT_PREFIX02_hrsr.png           after Apply: the new layer "HRsR mesh", the input hidden
+#   OUT_PREFIX03_cloud.png          the same view with the input shown and the mesh hidden
+# SECONDS: how long the filter may run (default 10; the view is taken after that).
 set -eu
-CLOUD=$1 OUT=$2
+CLOUD=$1 OUT=$2 SECONDS_TO_RUN=${3:-10}
 unset QT_QPA_PLATFORM # the GUI draws on the X server, not offscreen
 export XDG_RUNTIME_DIR=/tmp/xdg-screenshots
 mkdir -p -m 700 "$XDG_RUNTIME_DIR"
@@ -35,7 +37,7 @@ sleep 2
 import -window root "${OUT}01_filter_dialog.png"
 eval "$(xdotool getwindowgeometry --shell "$DIALOG")" # X Y WIDTH HEIGHT; buttons at the bottom
 xdotool mousemove $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 20)) click 1 # Apply
-sleep 10
+sleep "$SECONDS_TO_RUN"
 xdotool mousemove $((X + WIDTH / 4)) $((Y + HEIGHT - 20)) click 1     # Close
 sleep 1
 xdotool mousemove 875 111 click 1 # hide layer 0 (the input points): its eye icon
@@ -47,3 +49,7 @@ for turn in 1 2; do
 done
 sleep 2
 import -window root "${OUT}02_hrsr.png"
+xdotool mousemove 875 111 click 1 # show layer 0 again
+xdotool mousemove 875 142 click 1 # hide layer 1 (the mesh)
+sleep 2
+import -window root "${OUT}03_cloud.png"
