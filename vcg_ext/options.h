@@ -167,6 +167,12 @@ inline constexpr double kMinAnglePenalty = 0.1;
 inline constexpr double kCrossingExtension = 1.11;
 inline constexpr int kCrossingRounds = 100;
 inline constexpr double kDihedralGuard = 1.75;
+/// D-30, D-31: an edge of HRsR's mesh is overlong when it is longer than this many times RsR's
+/// candidate reach (the ⌊2k/3⌋-th neighbour distance, §5.1) among the input points at either
+/// end. Twice, because the re-expansion makes longer, thinner triangles than RsR where the
+/// sampling is anisotropic (the rocker arm's flat faces reach 1.5 times the bound and were opened
+/// at 1.5), while the ears over real holes are longer still (the shark's: up to 3.4 times).
+inline constexpr double kOverlongFactor = 2.0;
 /// HRsR never collapses below min(N, this) points (D-24): RsR needs points to triangulate, and
 /// 12.5 % of a tiny cloud is a single point (3 points gave an empty mesh).
 inline constexpr std::size_t kMinCoarsePoints = 200;

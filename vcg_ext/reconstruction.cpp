@@ -2,6 +2,7 @@
 
 #include "errors.h"
 #include "hrsr/collapse.h"
+#include "hrsr/input_reach.h"
 #include "hrsr/unsampled_triangles.h"
 #include "mesh/fans.h"
 #include "mesh/fold_repair.h"
@@ -288,6 +289,9 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     {
         Timer timer(report.timings, "hand-off");
         coarse = hand_off(cloud, collapsed, pre, exec, report, dropped_nodes);
+        // D-31: a coarse handle edge must be one RsR could make on the input points.
+        coarse.handle_reach = input_reach(cloud.positions, coarse.input_index,
+                                          rsr::candidate_rank(pre.k, cloud.size()), exec);
     }
     if (coarse.size() == 0)
         throw InvalidOption(OptionId::CollapseRatio,

@@ -47,8 +47,9 @@ void RsrState::run(RsrPhase phase) {
         break;
     case RsrPhase::Handles:
         rsr::insert_handles(*rotation, *faces, *geometry, index, options,
-                            rsr::handle_hop_limit(options.min_handle_loop, cloud.smoothed.size(),
-                                                  cloud.smoothed.size()),
+                            {rsr::handle_hop_limit(options.min_handle_loop, cloud.smoothed.size(),
+                                                   cloud.smoothed.size()),
+                             nullptr},
                             triangles, roots, nullptr);
         break;
     case RsrPhase::Ears:

@@ -2,6 +2,7 @@
 
 #include "knn.h"
 #include "mesh/small_holes_fill.h"
+#include "options.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,10 +13,6 @@ namespace hrsr {
 
 namespace {
 
-// Twice §5.1's bound: HRsR's re-expansion makes longer, thinner triangles than RsR where the
-// sampling is anisotropic (the rocker arm's flat faces reach 1.5 times the bound and were opened
-// at 1.5), while the ears over real holes are longer still (the shark's: up to 3.4 times).
-constexpr double kReachFactor = 2.0;
 // Only vertices whose longest edge is over this many times their shortest are queried, to keep
 // the kNN queries to the few vertices next to a long edge: twice the rank-th neighbour distance
 // is about 7.6 spacings for rank 46, and a vertex's shortest edge is about one spacing.
@@ -155,8 +152,8 @@ std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
         if (longest[v] > kScreen * shortest[v]) queried.push_back(v);
     if (queried.empty()) return 0;
 
-    // reach[v]: kReachFactor times the rank-th neighbour distance of v's point (infinite where
-    // not queried).
+    // reach[v]: constants::kOverlongFactor times the rank-th neighbour distance of v's point
+    // (infinite where not queried).
     std::vector<double> reach(vertices, std::numeric_limits<double>::infinity());
     const KnnIndex index(points);
     parallel_for(exec, queried.size(), [&](std::size_t i) {
@@ -164,7 +161,7 @@ std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
         const std::uint32_t v = queried[i];
         index.neighbours_of(vertex_point[v], rank, found);
         if (int(found.size()) == rank)
-            reach[v] = kReachFactor * std::sqrt(found.back().squared_distance);
+            reach[v] = constants::kOverlongFactor * std::sqrt(found.back().squared_distance);
     });
     std::vector<std::uint8_t> overlong(triangles.size(), 0);
     bool any = false;

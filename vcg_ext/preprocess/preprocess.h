@@ -25,6 +25,9 @@ struct PreparedCloud {
     /// Input points each point stands for (HRsR's coarse cloud: its collapse weight); empty =
     /// one each. RsR measures handle loops in spacings of the input through it (D-27).
     std::vector<std::uint32_t> weights;
+    /// HRsR's coarse cloud: the longest handle edge at each point, the candidate reach of RsR on
+    /// the input points there (D-31); empty = only the candidate graph limits handles.
+    std::vector<double> handle_reach;
     Normalisation normalisation;
     /// Set by preprocess(): component of each point (0 … component_count − 1, §4.6).
     std::vector<std::uint32_t> component;

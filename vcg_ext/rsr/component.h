@@ -15,6 +15,8 @@ struct ComponentCloud {
     std::vector<Vec3> normals;   ///< unit, oriented
     /// Input points the component stands for (= its point count unless HRsR collapsed it).
     std::size_t represented_points = 0;
+    /// Longest handle edge at each point (D-31: HRsR's coarse cloud); empty = no such limit.
+    std::vector<double> handle_reach;
 };
 
 using LocalTriangle = std::array<std::uint32_t, 3>;

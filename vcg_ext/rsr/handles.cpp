@@ -27,11 +27,21 @@ bool is_open(const RotationSystem& rs, const Faces& faces, std::uint32_t v) {
 
 using FacePair = std::pair<std::uint32_t, std::uint32_t>;
 
+// D-31: on HRsR's coarse cloud a handle edge must not be overlong in D-30's sense (longer than
+// twice RsR's candidate reach among the input points at either end): such an edge spans a gap
+// between parts that the input points never join (the feline's tail and body at p = 0.125).
+bool overlong(const RotationSystem& rs, const std::vector<double>& reach, std::uint32_t v,
+              std::uint32_t w) {
+    const double l = (rs.position(v) - rs.position(w)).Norm();
+    return l > constants::kOverlongFactor * std::min(reach[v], reach[w]);
+}
+
 // D-27: a handle edge is an edge of the surface, so it obeys the normal filter θ of every other
 // edge (§3.3). Without it, the sides of a thin part (normals opposed) were grouped as handles.
 std::map<FacePair, std::vector<HandleCandidate>>
 collect_candidates(const RotationSystem& rs, const Faces& faces, GeometryCheck& geometry,
-                   const KnnIndex& index, const PreprocessOptions& options, HandleStats& stats) {
+                   const KnnIndex& index, const PreprocessOptions& options,
+                   const std::vector<double>* reach, HandleStats& stats) {
     const double min_cos = normal_filter_cosine(options);
     std::map<FacePair, std::vector<HandleCandidate>> groups;
     std::vector<Neighbour> found;
@@ -43,6 +53,7 @@ collect_candidates(const RotationSystem& rs, const Faces& faces, GeometryCheck& 
             const std::uint32_t w = nb.index;
             if (rs.degree(w) == 0 || rs.adjacent(v, w) || rs.normal(v).dot(rs.normal(w)) < min_cos)
                 continue;
+            if (reach && !reach->empty() && overlong(rs, *reach, v, w)) continue;
             const std::uint32_t fa = faces.face_of_wedge(v, w), fb = faces.face_of_wedge(w, v);
             // A handle joins two holes; entering a recorded triangle would unmake it.
             if (fa == fb || faces.is_recorded_triangle(fa) || faces.is_recorded_triangle(fb) ||
@@ -96,13 +107,15 @@ std::size_t BoundedBfs::distance(const RotationSystem& rs, std::uint32_t a, std:
 }
 
 HandleStats insert_handles(RotationSystem& rs, Faces& faces, GeometryCheck& geometry,
-                           const KnnIndex& index, const RsrOptions& options, std::size_t hop_limit,
-                           const std::vector<LocalTriangle>& triangles,
+                           const KnnIndex& index, const RsrOptions& options,
+                           const HandleLimits& limits, const std::vector<LocalTriangle>& triangles,
                            std::vector<std::uint32_t>& roots, Observer* observer) {
     HandleStats stats;
+    const std::size_t hop_limit = limits.hop_limit;
     stats.hop_limit = hop_limit;
     BoundedBfs bfs(rs.vertex_count());
-    const auto by_pair = collect_candidates(rs, faces, geometry, index, options.preprocess, stats);
+    const auto by_pair =
+        collect_candidates(rs, faces, geometry, index, options.preprocess, limits.reach, stats);
     // Largest groups first; ties by the face pair (D-10).
     std::vector<std::pair<FacePair, const std::vector<HandleCandidate>*>> groups;
     for (const auto& [pair, list] : by_pair) groups.emplace_back(pair, &list);

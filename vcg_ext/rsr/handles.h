@@ -30,12 +30,19 @@ struct HandleStats {
 std::size_t handle_hop_limit(double loop_spacings, std::size_t points,
                              std::size_t represented_points);
 
-/// Inserts handle edges between points more than `hop_limit` graph hops apart; `roots` receives
-/// their endpoints (explored first by the ears). `triangles` (those of the face-split phase) is
-/// only shown to the observer.
+/// What a handle edge must satisfy besides the candidate graph and the geometry check.
+struct HandleLimits {
+    std::size_t hop_limit = 0; ///< its endpoints more than this many graph hops apart (D-27)
+    /// D-31: no longer than constants::kOverlongFactor · reach[v] at either endpoint v (empty:
+    /// no limit).
+    const std::vector<double>* reach = nullptr;
+};
+
+/// Inserts handle edges within `limits`; `roots` receives their endpoints (explored first by the
+/// ears). `triangles` (those of the face-split phase) is only shown to the observer.
 HandleStats insert_handles(RotationSystem& rotation, Faces& faces, GeometryCheck& geometry,
-                           const KnnIndex& index, const RsrOptions& options, std::size_t hop_limit,
-                           const std::vector<LocalTriangle>& triangles,
+                           const KnnIndex& index, const RsrOptions& options,
+                           const HandleLimits& limits, const std::vector<LocalTriangle>& triangles,
                            std::vector<std::uint32_t>& roots, Observer* observer);
 
 /// Hop distances in the current graph by breadth-first search bounded at a depth (D-11).

@@ -31,6 +31,7 @@ void reconstruct_part(const PreparedCloud& cloud, ComponentResult& part, const R
         local.smoothed.push_back(cloud.smoothed[i]);
         local.normals.push_back(cloud.normals[i]);
         local.represented_points += cloud.weights.empty() ? 1 : cloud.weights[i];
+        if (!cloud.handle_reach.empty()) local.handle_reach.push_back(cloud.handle_reach[i]);
     }
     part.triangles = reconstruct_component(local, options, exec, part.stats, observer);
 }

@@ -70,10 +70,11 @@ std::vector<LocalTriangle> reconstruct_component(const ComponentCloud& cloud,
     // crack open that needed a handle.
     std::vector<std::uint32_t> roots;
     begin(exec, "handles");
-    const std::size_t hop_limit =
+    const HandleLimits limits{
         handle_hop_limit(options.min_handle_loop, cloud.smoothed.size(),
-                         std::max(cloud.represented_points, cloud.smoothed.size()));
-    stats.handles = insert_handles(rotation, faces, geometry, index, options, hop_limit, triangles,
+                         std::max(cloud.represented_points, cloud.smoothed.size())),
+        &cloud.handle_reach};
+    stats.handles = insert_handles(rotation, faces, geometry, index, options, limits, triangles,
                                    roots, observer);
     clock.lap("handles");
     // D-13: the ear phase never merges faces (D-12), so it also runs for a limited genus, except

@@ -1,0 +1,19 @@
+// How far RsR on the full cloud could join a point to another: its candidate edges end at the
+// ⌊2k/3⌋-th neighbour (§5.1). HRsR's coarse cloud asks this of the input points (D-31).
+#pragma once
+
+#include "parallel.h"
+#include "point_set.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace hrsr {
+
+/// For each point i of `at`: the distance from points[at[i]] to its `rank`-th nearest other
+/// point, or infinity when the cloud has fewer. Deterministic whatever the thread count.
+std::vector<double> input_reach(const std::vector<Vec3>& points,
+                                const std::vector<std::uint32_t>& at, int rank,
+                                const Execution& exec);
+
+} // namespace hrsr
