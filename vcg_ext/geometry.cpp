@@ -22,10 +22,9 @@ bool cross_in_plane(const Vec3& plane_normal, const Vec3& a, const Vec3& b, cons
 
 } // namespace
 
-bool segments_cross(const Vec3& a, const Vec3& b, const Vec3& na, const Vec3& nb, const Vec3& c,
-                    const Vec3& d, const Vec3& nc, const Vec3& nd) {
-    return cross_in_plane((na + nb) * 0.5, a, b, c, d) ||
-           cross_in_plane((nc + nd) * 0.5, a, b, c, d);
+bool segments_cross(const SurfaceSegment& ab, const SurfaceSegment& cd) {
+    return cross_in_plane((ab.na + ab.nb) * 0.5, ab.a, ab.b, cd.a, cd.b) ||
+           cross_in_plane((cd.na + cd.nb) * 0.5, ab.a, ab.b, cd.a, cd.b);
 }
 
 namespace {

@@ -54,11 +54,18 @@ inline double edge_length(DistanceMode mode, const Vec3& p, const Vec3& q, const
     return mode == DistanceMode::Tangent ? tangent_distance(q - p, np, nq) : (q - p).Norm();
 }
 
+/// A segment between two points of a surface, with the unit normals at its endpoints.
+struct SurfaceSegment {
+    const Vec3& a;
+    const Vec3& b;
+    const Vec3& na;
+    const Vec3& nb;
+};
+
 /// Whether segment ab crosses segment cd "in the tangent plane" (§3.4): tested in the planes
 /// orthogonal to the half-sums of the endpoint normals of each segment; touching or collinear
 /// counts as crossing (conservative). Segments must not share an endpoint.
-bool segments_cross(const Vec3& a, const Vec3& b, const Vec3& na, const Vec3& nb, const Vec3& c,
-                    const Vec3& d, const Vec3& nc, const Vec3& nd);
+bool segments_cross(const SurfaceSegment& ab, const SurfaceSegment& cd);
 
 /// Largest interior angle of triangle abc, in radians (π for degenerate triangles).
 double largest_angle(const Vec3& a, const Vec3& b, const Vec3& c);

@@ -303,12 +303,12 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
 
     CompactMesh m = compact(coarse.size(), std::move(rsr_mesh.triangles));
     report.vertex_copies = m.copies;
-    std::vector<std::uint32_t> coarse_vertex_node;
-    std::vector<Vec3> coarse_positions;
+    CoarseMesh coarse_mesh;
     for (std::uint32_t p : m.vertex_point) {
-        coarse_vertex_node.push_back(coarse.input_index[p]);
-        coarse_positions.push_back(coarse.positions[p]);
+        coarse_mesh.vertex_node.push_back(coarse.input_index[p]);
+        coarse_mesh.positions.push_back(coarse.positions[p]);
     }
+    coarse_mesh.triangles = std::move(m.triangles);
     coarse = PreparedCloud();
     report.l_min = options.l_min_percent > 0
                        ? options.l_min_percent / 100.0 * report.preprocess.bbox_diagonal
@@ -319,10 +319,10 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     ReexpandedMesh fine;
     {
         Timer timer(report.timings, "re-expansion");
-        fine = replay_collapses(cloud.positions, cloud.normals, coarse_vertex_node,
-                                coarse_positions, m.triangles, std::move(collapsed.records),
-                                options.reexpand, report.l_min * cloud.normalisation.scale, exec,
-                                report.reexpansion, reexpansion_observer);
+        fine = replay_collapses({cloud.positions, cloud.normals, coarse_mesh,
+                                 std::move(collapsed.records), options.reexpand,
+                                 report.l_min * cloud.normalisation.scale},
+                                exec, report.reexpansion, reexpansion_observer);
     }
 
     begin_phase(exec, "assembly");

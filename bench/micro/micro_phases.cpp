@@ -72,13 +72,13 @@ void reexpansion(benchmark::State& state) {
     const rsr::ComponentCloud& c = torus_cloud(size_of(state));
     for (auto _ : state) {
         state.PauseTiming();
-        const CoarseMesh m = coarse_mesh(c, CollapseOptions{});
+        const ReexpansionStart m = reexpansion_start(c, CollapseOptions{});
         ReexpansionStats stats;
         std::vector<CollapseRecord> records = m.collapsed.records; // consumed by the replay
+        const ReexpandOptions options;
         state.ResumeTiming();
-        const ReexpandedMesh fine =
-            replay_collapses(c.positions, c.normals, m.vertex_node, m.positions, m.triangles,
-                             std::move(records), ReexpandOptions{}, 0.0, {}, stats);
+        const ReexpandedMesh fine = replay_collapses(
+            {c.positions, c.normals, m.mesh, std::move(records), options, 0.0}, {}, stats);
         benchmark::DoNotOptimize(fine.triangles.data());
     }
 }

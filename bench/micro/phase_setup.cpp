@@ -43,19 +43,21 @@ void RsrState::run(RsrPhase phase) {
         break;
     case RsrPhase::FaceSplit:
         geometry = std::make_unique<rsr::GeometryCheck>(index, cloud.smoothed, normals, *rotation);
-        rsr::split_faces(*rotation, *faces, *geometry, candidates, triangles, nullptr, nullptr);
+        embedding = std::make_unique<rsr::Embedding>(
+            rsr::Embedding{*rotation, *faces, *geometry, triangles, nullptr});
+        rsr::split_faces(*embedding, candidates, nullptr);
         break;
     case RsrPhase::Handles:
-        rsr::insert_handles(*rotation, *faces, *geometry, index, options,
+        rsr::insert_handles(*embedding, index, options,
                             {rsr::handle_hop_limit(options.min_handle_loop, cloud.smoothed.size(),
                                                    cloud.smoothed.size()),
                              nullptr},
-                            triangles, roots, nullptr);
+                            roots);
         break;
     case RsrPhase::Ears:
-        rsr::triangulate_ears(*rotation, *faces, cloud, graph.max_length,
-                              options.preprocess.distance, roots, triangles, nullptr);
-        rsr::close_small_holes(*rotation, *faces, triangles, nullptr);
+        rsr::triangulate_ears(*embedding, cloud, graph.max_length, options.preprocess.distance,
+                              roots);
+        rsr::close_small_holes(*embedding);
         break;
     }
 }
@@ -64,8 +66,9 @@ void RsrState::run_until(RsrPhase phase) {
     for (int p = 0; p < int(phase); ++p) run(RsrPhase(p));
 }
 
-CoarseMesh coarse_mesh(const rsr::ComponentCloud& cloud, const CollapseOptions& options) {
-    CoarseMesh m;
+ReexpansionStart reexpansion_start(const rsr::ComponentCloud& cloud,
+                                   const CollapseOptions& options) {
+    ReexpansionStart m;
     m.collapsed = collapse(cloud.positions, cloud.normals, options, {});
     rsr::ComponentCloud coarse;
     coarse.positions = coarse.smoothed = m.collapsed.positions;
@@ -83,10 +86,10 @@ CoarseMesh coarse_mesh(const rsr::ComponentCloud& cloud, const CollapseOptions& 
             point_of_vertex.push_back(p);
         }
     for (const rsr::LocalTriangle& t : local)
-        m.triangles.push_back({vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]]});
-    for (std::uint32_t v : split_non_manifold_vertices(point_of_vertex.size(), m.triangles)) {
-        m.vertex_node.push_back(m.collapsed.survivors[point_of_vertex[v]]);
-        m.positions.push_back(m.collapsed.positions[point_of_vertex[v]]);
+        m.mesh.triangles.push_back({vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]]});
+    for (std::uint32_t v : split_non_manifold_vertices(point_of_vertex.size(), m.mesh.triangles)) {
+        m.mesh.vertex_node.push_back(m.collapsed.survivors[point_of_vertex[v]]);
+        m.mesh.positions.push_back(m.collapsed.positions[point_of_vertex[v]]);
     }
     return m;
 }

@@ -11,6 +11,7 @@
 #include "options.h"
 #include "rsr/candidate_graph.h"
 #include "rsr/component.h"
+#include "rsr/embedding.h"
 #include "rsr/faces.h"
 #include "rsr/geometry_check.h"
 #include "rsr/rotation_system.h"
@@ -40,6 +41,7 @@ struct RsrState {
     std::unique_ptr<rsr::Faces> faces;
     std::unique_ptr<rsr::GeometryCheck> geometry;
     std::vector<rsr::LocalTriangle> triangles;
+    std::unique_ptr<rsr::Embedding> embedding; ///< of the four above, from the face split on
     std::vector<std::uint32_t> roots;
 
     explicit RsrState(const rsr::ComponentCloud& c);
@@ -52,13 +54,12 @@ struct RsrState {
 };
 
 /// What re-expansion starts from: the collapse records and the RsR mesh of the survivors.
-struct CoarseMesh {
+struct ReexpansionStart {
     CollapsedCloud collapsed;
-    std::vector<std::uint32_t> vertex_node;
-    std::vector<Vec3> positions;
-    std::vector<Triangle> triangles;
+    CoarseMesh mesh;
 };
 
-CoarseMesh coarse_mesh(const rsr::ComponentCloud& cloud, const CollapseOptions& options);
+ReexpansionStart reexpansion_start(const rsr::ComponentCloud& cloud,
+                                   const CollapseOptions& options);
 
 } // namespace hrsr::bench

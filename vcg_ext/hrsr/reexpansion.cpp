@@ -59,18 +59,16 @@ private:
 
 class Replayer {
 public:
-    Replayer(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-             const std::vector<std::uint32_t>& coarse_vertex_node,
-             const std::vector<Vec3>& coarse_positions,
-             const std::vector<Triangle>& coarse_triangles, std::size_t records,
-             const ReexpandOptions& options, ReexpansionObserver* observer)
-        : points_(points), normals_(normals), options_(options), observer_(observer),
-          mesh_(coarse_positions, coarse_triangles, coarse_positions.size() + records,
-                coarse_triangles.size() + 2 * records),
-          vertices_of_(points.size(), coarse_vertex_node), vertex_node_(coarse_vertex_node) {
-        vertex_node_.reserve(coarse_vertex_node.size() + records);
-        alias_.assign(points.size(), ReexpandedMesh::kNoNode);
-        for (std::uint32_t node : coarse_vertex_node) alias_[node] = node;
+    Replayer(const ReexpansionInput& input, ReexpansionObserver* observer)
+        : points_(input.points), normals_(input.normals), options_(input.options),
+          observer_(observer), mesh_(input.coarse.positions, input.coarse.triangles,
+                                     input.coarse.positions.size() + input.records.size(),
+                                     input.coarse.triangles.size() + 2 * input.records.size()),
+          vertices_of_(input.points.size(), input.coarse.vertex_node),
+          vertex_node_(input.coarse.vertex_node) {
+        vertex_node_.reserve(input.coarse.vertex_node.size() + input.records.size());
+        alias_.assign(input.points.size(), ReexpandedMesh::kNoNode);
+        for (std::uint32_t node : input.coarse.vertex_node) alias_[node] = node;
     }
 
     // Aliasing (D-16): b is represented by a's vertices from now on.
@@ -144,17 +142,14 @@ private:
 
 } // namespace
 
-ReexpandedMesh replay_collapses(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                                const std::vector<std::uint32_t>& coarse_vertex_node,
-                                const std::vector<Vec3>& coarse_positions,
-                                const std::vector<Triangle>& coarse_triangles,
-                                std::vector<CollapseRecord> records, const ReexpandOptions& options,
-                                double l_min, const Execution& exec, ReexpansionStats& stats,
-                                ReexpansionObserver* observer) {
+ReexpandedMesh replay_collapses(ReexpansionInput input, const Execution& exec,
+                                ReexpansionStats& stats, ReexpansionObserver* observer) {
+    const ReexpandOptions& options = input.options;
+    const double l_min = input.l_min;
+    std::vector<CollapseRecord>& records = input.records;
     validate(options);
     stats.records = records.size();
-    Replayer replayer(points, normals, coarse_vertex_node, coarse_positions, coarse_triangles,
-                      records.size(), options, observer);
+    Replayer replayer(input, observer);
     if (exec.progress) exec.progress->begin("re-expansion");
     for (std::size_t k = records.size(); k-- > 0;) {
         const CollapseRecord& r = records[k];

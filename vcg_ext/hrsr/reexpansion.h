@@ -42,17 +42,29 @@ public:
                             bool /*unresolved*/) {}
 };
 
-/// Replays `records` backwards on the coarse mesh. `coarse_vertex_node[v]` is the node of each
-/// coarse mesh vertex (copies of a non-manifold node share it). `points` and `normals` are the
-/// original positions and normals of all nodes (the algorithm's coordinates). `l_min` is in
-/// those coordinates. `records` is taken by value (pass it with std::move): it is freed before
-/// the mesh is exported, which is the phase's memory peak.
-ReexpandedMesh replay_collapses(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                                const std::vector<std::uint32_t>& coarse_vertex_node,
-                                const std::vector<Vec3>& coarse_positions,
-                                const std::vector<Triangle>& coarse_triangles,
-                                std::vector<CollapseRecord> records, const ReexpandOptions& options,
-                                double l_min, const Execution& exec, ReexpansionStats& stats,
-                                ReexpansionObserver* observer = nullptr);
+/// The mesh RsR built on the coarse cloud, where the re-expansion starts.
+struct CoarseMesh {
+    std::vector<std::uint32_t> vertex_node; ///< per vertex: its node (copies of a non-manifold
+                                            ///< node share it)
+    std::vector<Vec3> positions;            ///< per vertex
+    std::vector<Triangle> triangles;
+};
+
+/// What the re-expansion replays, and on what.
+struct ReexpansionInput {
+    /// Original positions and normals of all nodes (the algorithm's coordinates).
+    const std::vector<Vec3>& points;
+    const std::vector<Vec3>& normals;
+    const CoarseMesh& coarse;
+    /// Taken over (move them in): they are freed before the mesh is exported, which is the
+    /// phase's memory peak.
+    std::vector<CollapseRecord> records;
+    const ReexpandOptions& options;
+    double l_min = 0; ///< in the points' coordinates
+};
+
+/// Replays the records backwards on the coarse mesh.
+ReexpandedMesh replay_collapses(ReexpansionInput input, const Execution& exec,
+                                ReexpansionStats& stats, ReexpansionObserver* observer = nullptr);
 
 } // namespace hrsr

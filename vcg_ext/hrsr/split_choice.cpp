@@ -101,41 +101,59 @@ struct NewTriangles {
     }
 };
 
-// Chains of triangles around the two split vertices; consecutive ones share a spoke.
-Score score(const std::vector<SFace*>& wedges, const Fan& new_fan, const Fan& old_fan,
-            const NewTriangles& spokes, std::size_t i, std::size_t j, const Vec3& p_old,
-            const Vec3& p_new) {
-    const std::size_t d = wedges.size();
-    Score s;
-    auto add = [&](const Joint& joint) {
-        s.energy += joint.energy;
-        s.worst_dihedral = std::max(s.worst_dihedral, joint.dihedral);
-    };
-    const Vec3& n_out = spokes.out_normal[j];
-    const Vec3& n_in = spokes.in_normal[i];
-    s.energy += spokes.out_angle[j] + spokes.in_angle[i];
-    add(Joint(n_in, n_out, std::max((p_new - p_old).Norm(), 1e-8))); // D-18: the true shared edge
-    // side(from, to): the wedges from spoke `from` counter-clockwise to spoke `to`, between the
-    // new triangles with normals `first` (at `from`) and `last` (at `to`).
-    auto side = [&](const Fan& fan, std::size_t from, std::size_t to, const Vec3& first,
-                    const Vec3& last) {
-        bool have_previous = true;
-        for (std::size_t w = from; w != to; w = (w + 1) % d) {
-            if (!wedges[w]) { // the boundary gap: no face, no adjacency across it (D-18)
-                have_previous = false;
-                continue;
+// Everything a pair's score reads that does not depend on the pair: built once per split.
+struct SplitTerms {
+    const std::vector<SFace*>* wedges = nullptr; ///< the star's: null where a wedge is no face
+    Fan new_fan, old_fan;                        ///< wedges around p_new and around p_old
+    NewTriangles spokes;
+    double new_edge = 0; ///< |p_new − p_old| (at least 1e-8): the edge the new triangles share
+
+    // Refills the terms (their storage is reused: one per thread).
+    void assign(const Vec3& p_old, const Vec3& p_new, const std::vector<Vec3>& q,
+                const std::vector<SFace*>& star_wedges) {
+        wedges = &star_wedges;
+        new_fan.assign(p_new, q, star_wedges);
+        old_fan.assign(p_old, q, star_wedges);
+        spokes.assign(p_old, p_new, q);
+        new_edge = std::max((p_new - p_old).Norm(), 1e-8);
+    }
+
+    // Chains of triangles around the two split vertices; consecutive ones share a spoke. h_in
+    // comes from spoke i, h_out goes to spoke j.
+    Score score(std::size_t i, std::size_t j) const {
+        const std::size_t d = wedges->size();
+        Score s;
+        auto add = [&](const Joint& joint) {
+            s.energy += joint.energy;
+            s.worst_dihedral = std::max(s.worst_dihedral, joint.dihedral);
+        };
+        const Vec3& n_out = spokes.out_normal[j];
+        const Vec3& n_in = spokes.in_normal[i];
+        s.energy += spokes.out_angle[j] + spokes.in_angle[i];
+        add(Joint(n_in, n_out, new_edge)); // D-18: the true shared edge
+        // side(from, to): the wedges from spoke `from` counter-clockwise to spoke `to`, between
+        // the new triangles with normals `first` (at `from`) and `last` (at `to`).
+        auto side = [&](const Fan& fan, std::size_t from, std::size_t to, const Vec3& first,
+                        const Vec3& last) {
+            bool have_previous = true;
+            for (std::size_t w = from; w != to; w = (w + 1) % d) {
+                if (!(*wedges)[w]) { // the boundary gap: no face, no adjacency across it (D-18)
+                    have_previous = false;
+                    continue;
+                }
+                s.energy += fan.angle[w];
+                if (have_previous)
+                    add(w == from ? Joint(first, fan.normal[w], fan.spoke_length[w])
+                                  : fan.joint[w]);
+                if ((w + 1) % d == to) add(Joint(fan.normal[w], last, fan.spoke_length[to]));
+                have_previous = true;
             }
-            s.energy += fan.angle[w];
-            if (have_previous)
-                add(w == from ? Joint(first, fan.normal[w], fan.spoke_length[w]) : fan.joint[w]);
-            if ((w + 1) % d == to) add(Joint(fan.normal[w], last, fan.spoke_length[to]));
-            have_previous = true;
-        }
-    };
-    side(new_fan, j, i, n_out, n_in); // new side: b → a
-    side(old_fan, i, j, n_in, n_out); // old side: a → b
-    return s;
-}
+        };
+        side(new_fan, j, i, n_out, n_in); // new side: b → a
+        side(old_fan, i, j, n_in, n_out); // old side: a → b
+        return s;
+    }
+};
 
 } // namespace
 
@@ -146,17 +164,14 @@ SplitChoice choose_split(const SplitMesh& mesh, const Star& star, const Vec3& p_
     if (d < 2) return best;
     // Scratch reused from split to split: no allocation per split (there were about fifty).
     thread_local std::vector<Vec3> q;
-    thread_local Fan new_fan, old_fan;
-    thread_local NewTriangles spokes;
+    thread_local SplitTerms terms;
     q.clear();
     for (std::uint32_t v : star.neighbours) q.push_back(mesh.position(v));
-    new_fan.assign(p_new, q, star.wedges);
-    old_fan.assign(p_old, q, star.wedges);
-    spokes.assign(p_old, p_new, q);
+    terms.assign(p_old, p_new, q, star.wedges);
     for (std::size_t i = 0; i < d; ++i)
         for (std::size_t j = 0; j < d; ++j) {
             if (i == j) continue;
-            const Score s = score(star.wedges, new_fan, old_fan, spokes, i, j, p_old, p_new);
+            const Score s = terms.score(i, j);
             const SplitChoice candidate{true, star.neighbours[i], star.neighbours[j], s.energy};
             if (!best.found || s.energy < best.energy) best = candidate;
             if (s.worst_dihedral < constants::kDihedralGuard &&

@@ -20,11 +20,10 @@ struct Ear {
 
 class EarCutter {
 public:
-    EarCutter(RotationSystem& rs, Faces& faces, const ComponentCloud& cloud,
-              const std::vector<double>& max_length, DistanceMode mode,
-              std::vector<LocalTriangle>& triangles, Observer* observer)
-        : rs_(rs), faces_(faces), cloud_(cloud), max_length_(max_length), mode_(mode),
-          triangles_(triangles), observer_(observer) {}
+    EarCutter(Embedding& embedding, const ComponentCloud& cloud,
+              const std::vector<double>& max_length, DistanceMode mode)
+        : embedding_(embedding), rs_(embedding.rotation), faces_(embedding.faces), cloud_(cloud),
+          max_length_(max_length), mode_(mode) {}
 
     // Pushes every ear with apex i whose cut is short enough.
     void explore(std::uint32_t i) {
@@ -73,18 +72,10 @@ private:
                faces_.face_of_wedge(e.w, e.u); // a split, never a merge
     }
 
-    void record(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-        count_triangle_edge(rs_, a, b);
-        count_triangle_edge(rs_, b, c);
-        count_triangle_edge(rs_, c, a);
-        faces_.mark_recorded_triangle(a, b);
-        triangles_.push_back({a, b, c});
-    }
-
     void cut(const Ear& e) {
         const auto [d1, d2] = rs_.insert_edge(e.u, e.w);
         faces_.split(d1, d2);
-        record(e.i, e.u, e.w);
+        embedding_.record_triangle(e.i, e.u, e.w);
         ++stats.ears;
         std::size_t recorded = 1;
         // The far side of the new edge may already be a triangle (x, w, u): close it too, in
@@ -106,32 +97,29 @@ private:
                 rs_.dart(e.u, rs_.next(e.u, ux)).to != e.w ||
                 rs_.dart(x, rs_.next(x, xw)).to != e.u)
                 continue;
-            record(x, e.w, e.u);
+            embedding_.record_triangle(x, e.w, e.u);
             ++stats.closing_triangles;
             ++recorded;
         }
-        if (observer_)
-            observer_->edge_inserted(Phase::Ears, e.u, e.w, rs_, faces_, triangles_, recorded);
+        embedding_.edge_inserted(Phase::Ears, e.u, e.w, recorded);
     }
 
+    Embedding& embedding_;
     RotationSystem& rs_;
     Faces& faces_;
     const ComponentCloud& cloud_;
     const std::vector<double>& max_length_;
     DistanceMode mode_;
-    std::vector<LocalTriangle>& triangles_;
-    Observer* observer_;
     std::priority_queue<Ear, std::vector<Ear>, std::greater<Ear>> queue_;
 };
 
 } // namespace
 
-EarStats triangulate_ears(RotationSystem& rs, Faces& faces, const ComponentCloud& cloud,
+EarStats triangulate_ears(Embedding& embedding, const ComponentCloud& cloud,
                           const std::vector<double>& max_length, DistanceMode mode,
-                          const std::vector<std::uint32_t>& roots,
-                          std::vector<LocalTriangle>& triangles, Observer* observer) {
-    EarCutter cutter(rs, faces, cloud, max_length, mode, triangles, observer);
-    const std::size_t n = rs.vertex_count();
+                          const std::vector<std::uint32_t>& roots) {
+    EarCutter cutter(embedding, cloud, max_length, mode);
+    const std::size_t n = embedding.rotation.vertex_count();
     std::vector<std::uint8_t> to_visit(n, 1);
     for (std::uint32_t r : roots) {
         to_visit[r] = 0;

@@ -4,9 +4,7 @@
 
 #include "options.h"
 #include "rsr/candidate_graph.h"
-#include "rsr/faces.h"
-#include "rsr/geometry_check.h"
-#include "rsr/observer.h"
+#include "rsr/embedding.h"
 
 #include <vector>
 
@@ -19,13 +17,11 @@ struct EarStats {
 
 /// `lengths_cloud` gives the positions/normals for ear scores (those of the candidate graph);
 /// `max_length` bounds them. Handle roots are explored first. Like GEL's, the ears have no
-/// geometric test (the face split's check is not consulted; docs/STATUS.md). Where a crack stays
+/// geometric test (embedding.geometry is not consulted; docs/STATUS.md). Where a crack stays
 /// open because of a genus limit (D-13) the caller skips the ears, which would bridge it with
 /// overlapping triangles.
-EarStats triangulate_ears(RotationSystem& rotation, Faces& faces,
-                          const ComponentCloud& lengths_cloud,
+EarStats triangulate_ears(Embedding& embedding, const ComponentCloud& lengths_cloud,
                           const std::vector<double>& max_length, DistanceMode mode,
-                          const std::vector<std::uint32_t>& roots,
-                          std::vector<LocalTriangle>& triangles, Observer* observer);
+                          const std::vector<std::uint32_t>& roots);
 
 } // namespace hrsr::rsr

@@ -65,21 +65,20 @@ bool register_triangles(const RotationSystem& rs, std::uint32_t v1, std::uint32_
 
 } // namespace
 
-FaceSplitStats split_faces(RotationSystem& rs, Faces& faces, GeometryCheck& geometry,
-                           const std::vector<CandidateEdge>& candidates,
-                           std::vector<LocalTriangle>& triangles, Observer* observer,
+FaceSplitStats split_faces(Embedding& e, const std::vector<CandidateEdge>& candidates,
                            Progress* progress) {
+    RotationSystem& rs = e.rotation;
     FaceSplitStats stats;
     std::vector<LocalTriangle> closed;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         if (progress && (c & 0x3fff) == 0) progress->update(double(c) / double(candidates.size()));
         const std::uint32_t v1 = candidates[c].i, v2 = candidates[c].j;
         if (rs.adjacent(v1, v2)) continue; // MST edges, and edges already inserted
-        if (faces.face_of_wedge(v1, v2) != faces.face_of_wedge(v2, v1)) {
+        if (e.faces.face_of_wedge(v1, v2) != e.faces.face_of_wedge(v2, v1)) {
             ++stats.rejected_topology;
             continue;
         }
-        if (!geometry.passes(v1, v2)) {
+        if (!e.geometry.passes(v1, v2)) {
             ++stats.rejected_geometry;
             continue;
         }
@@ -88,17 +87,10 @@ FaceSplitStats split_faces(RotationSystem& rs, Faces& faces, GeometryCheck& geom
             continue;
         }
         const auto [d1, d2] = rs.insert_edge(v1, v2);
-        faces.split(d1, d2);
-        for (const LocalTriangle& t : closed) {
-            count_triangle_edge(rs, t[0], t[1]);
-            count_triangle_edge(rs, t[1], t[2]);
-            count_triangle_edge(rs, t[2], t[0]);
-            faces.mark_recorded_triangle(t[0], t[1]);
-            triangles.push_back(t);
-        }
+        e.faces.split(d1, d2);
+        for (const LocalTriangle& t : closed) e.record_triangle(t[0], t[1], t[2]);
         ++stats.inserted;
-        if (observer)
-            observer->edge_inserted(Phase::FaceSplit, v1, v2, rs, faces, triangles, closed.size());
+        e.edge_inserted(Phase::FaceSplit, v1, v2, closed.size());
     }
     return stats;
 }

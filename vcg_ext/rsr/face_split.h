@@ -3,9 +3,7 @@
 #pragma once
 
 #include "rsr/candidate_graph.h"
-#include "rsr/faces.h"
-#include "rsr/geometry_check.h"
-#include "rsr/observer.h"
+#include "rsr/embedding.h"
 
 #include <vector>
 
@@ -18,10 +16,8 @@ struct FaceSplitStats {
     std::size_t rejected_triangles = 0; ///< would close an invalid triangle
 };
 
-/// Runs the phase; appends the triangles it closes (counter-clockwise seen from the normals).
-FaceSplitStats split_faces(RotationSystem& rotation, Faces& faces, GeometryCheck& geometry,
-                           const std::vector<CandidateEdge>& candidates,
-                           std::vector<LocalTriangle>& triangles, Observer* observer,
+/// Runs the phase on `candidates` (ascending length); records the triangles it closes.
+FaceSplitStats split_faces(Embedding& embedding, const std::vector<CandidateEdge>& candidates,
                            Progress* progress);
 
 /// Adds one to the triangle counter of edge {u, w} (both darts).

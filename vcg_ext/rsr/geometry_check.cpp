@@ -31,8 +31,8 @@ bool GeometryCheck::passes(std::uint32_t v1, std::uint32_t v2) {
             const std::uint32_t b = d.to;
             // Each unordered pair once: a pair of two ball points is tested from the smaller.
             if (!faces_same_way(b) || (stamp_[b] == query_ && b < a)) continue;
-            if (segments_cross(p1, p2, normals_[v1], normals_[v2], positions_[a], positions_[b],
-                               normals_[a], normals_[b]))
+            if (segments_cross({p1, p2, normals_[v1], normals_[v2]},
+                               {positions_[a], positions_[b], normals_[a], normals_[b]}))
                 return false;
         }
     }

@@ -39,9 +39,10 @@ bool overlong(const RotationSystem& rs, const std::vector<double>& reach, std::u
 // D-27: a handle edge is an edge of the surface, so it obeys the normal filter θ of every other
 // edge (§3.3). Without it, the sides of a thin part (normals opposed) were grouped as handles.
 std::map<FacePair, std::vector<HandleCandidate>>
-collect_candidates(const RotationSystem& rs, const Faces& faces, GeometryCheck& geometry,
-                   const KnnIndex& index, const PreprocessOptions& options,
+collect_candidates(const Embedding& e, const KnnIndex& index, const PreprocessOptions& options,
                    const std::vector<double>* reach, HandleStats& stats) {
+    const RotationSystem& rs = e.rotation;
+    const Faces& faces = e.faces;
     const double min_cos = normal_filter_cosine(options);
     std::map<FacePair, std::vector<HandleCandidate>> groups;
     std::vector<Neighbour> found;
@@ -57,7 +58,7 @@ collect_candidates(const RotationSystem& rs, const Faces& faces, GeometryCheck& 
             const std::uint32_t fa = faces.face_of_wedge(v, w), fb = faces.face_of_wedge(w, v);
             // A handle joins two holes; entering a recorded triangle would unmake it.
             if (fa == fb || faces.is_recorded_triangle(fa) || faces.is_recorded_triangle(fb) ||
-                !geometry.passes(v, w))
+                !e.geometry.passes(v, w))
                 continue;
             groups[{std::min(fa, fb), std::max(fa, fb)}].push_back({v, w});
             ++stats.candidates;
@@ -106,16 +107,15 @@ std::size_t BoundedBfs::distance(const RotationSystem& rs, std::uint32_t a, std:
     return limit + 1;
 }
 
-HandleStats insert_handles(RotationSystem& rs, Faces& faces, GeometryCheck& geometry,
-                           const KnnIndex& index, const RsrOptions& options,
-                           const HandleLimits& limits, const std::vector<LocalTriangle>& triangles,
-                           std::vector<std::uint32_t>& roots, Observer* observer) {
+HandleStats insert_handles(Embedding& e, const KnnIndex& index, const RsrOptions& options,
+                           const HandleLimits& limits, std::vector<std::uint32_t>& roots) {
+    RotationSystem& rs = e.rotation;
+    Faces& faces = e.faces;
     HandleStats stats;
     const std::size_t hop_limit = limits.hop_limit;
     stats.hop_limit = hop_limit;
     BoundedBfs bfs(rs.vertex_count());
-    const auto by_pair =
-        collect_candidates(rs, faces, geometry, index, options.preprocess, limits.reach, stats);
+    const auto by_pair = collect_candidates(e, index, options.preprocess, limits.reach, stats);
     // Largest groups first; ties by the face pair (D-10).
     std::vector<std::pair<FacePair, const std::vector<HandleCandidate>*>> groups;
     for (const auto& [pair, list] : by_pair) groups.emplace_back(pair, &list);
@@ -138,7 +138,7 @@ HandleStats insert_handles(RotationSystem& rs, Faces& faces, GeometryCheck& geom
             const std::uint32_t fa = faces.face_of_wedge(c.v, c.w),
                                 fb = faces.face_of_wedge(c.w, c.v);
             if (faces.is_recorded_triangle(fa) || faces.is_recorded_triangle(fb)) continue;
-            if (bfs.distance(rs, c.v, c.w, hop_limit) <= hop_limit || !geometry.passes(c.v, c.w))
+            if (bfs.distance(rs, c.v, c.w, hop_limit) <= hop_limit || !e.geometry.passes(c.v, c.w))
                 continue;
             const bool joins = fa != fb;
             const auto [d1, d2] = rs.insert_edge(c.v, c.w);
@@ -150,8 +150,7 @@ HandleStats insert_handles(RotationSystem& rs, Faces& faces, GeometryCheck& geom
             ++stats.edges_inserted;
             roots.push_back(c.v);
             roots.push_back(c.w);
-            if (observer)
-                observer->edge_inserted(Phase::Handles, c.v, c.w, rs, faces, triangles, 0);
+            e.edge_inserted(Phase::Handles, c.v, c.w, 0);
         }
         if (merged) ++stats.handles;
     }

@@ -2,10 +2,9 @@
 // the genus where the data asks for it.
 #pragma once
 
+#include "knn.h"
 #include "options.h"
-#include "rsr/faces.h"
-#include "rsr/geometry_check.h"
-#include "rsr/observer.h"
+#include "rsr/embedding.h"
 
 #include <vector>
 
@@ -38,12 +37,11 @@ struct HandleLimits {
     const std::vector<double>* reach = nullptr;
 };
 
-/// Inserts handle edges within `limits`; `roots` receives their endpoints (explored first by the
-/// ears). `triangles` (those of the face-split phase) is only shown to the observer.
-HandleStats insert_handles(RotationSystem& rotation, Faces& faces, GeometryCheck& geometry,
-                           const KnnIndex& index, const RsrOptions& options,
-                           const HandleLimits& limits, const std::vector<LocalTriangle>& triangles,
-                           std::vector<std::uint32_t>& roots, Observer* observer);
+/// Inserts handle edges within `limits` (the genus limit is options.handles); `roots` receives
+/// their endpoints (explored first by the ears). `index` is the k-NN index of the rotation's
+/// positions.
+HandleStats insert_handles(Embedding& embedding, const KnnIndex& index, const RsrOptions& options,
+                           const HandleLimits& limits, std::vector<std::uint32_t>& roots);
 
 /// Hop distances in the current graph by breadth-first search bounded at a depth (D-11).
 class BoundedBfs {

@@ -62,8 +62,8 @@ std::vector<LocalTriangle> reconstruct_component(const ComponentCloud& cloud,
 
     begin(exec, "face split");
     GeometryCheck geometry(index, cloud.smoothed, normals, rotation);
-    stats.face_split =
-        split_faces(rotation, faces, geometry, candidates, triangles, observer, exec.progress);
+    Embedding embedding{rotation, faces, geometry, triangles, observer};
+    stats.face_split = split_faces(embedding, candidates, exec.progress);
     clock.lap("face split");
 
     // The handle search also runs with a genus limit (even 0) to learn whether the limit left a
@@ -74,8 +74,7 @@ std::vector<LocalTriangle> reconstruct_component(const ComponentCloud& cloud,
         handle_hop_limit(options.min_handle_loop, cloud.smoothed.size(),
                          std::max(cloud.represented_points, cloud.smoothed.size())),
         &cloud.handle_reach};
-    stats.handles = insert_handles(rotation, faces, geometry, index, options, limits, triangles,
-                                   roots, observer);
+    stats.handles = insert_handles(embedding, index, options, limits, roots);
     clock.lap("handles");
     // D-13: the ear phase never merges faces (D-12), so it also runs for a limited genus, except
     // where the limit left such a crack open: ears then zip it partly and fold over the surface
@@ -83,10 +82,9 @@ std::vector<LocalTriangle> reconstruct_component(const ComponentCloud& cloud,
     // handles = 0; none without ears). That crack stays a hole, as in GEL for genus 0.
     if (!stats.handles.limited) {
         begin(exec, "ear triangulation");
-        stats.ears = triangulate_ears(rotation, faces, cloud, graph.max_length, pre.distance, roots,
-                                      triangles, observer);
+        stats.ears = triangulate_ears(embedding, cloud, graph.max_length, pre.distance, roots);
     }
-    stats.small_holes = close_small_holes(rotation, faces, triangles, observer);
+    stats.small_holes = close_small_holes(embedding);
     clock.lap("ear triangulation");
     if (observer) observer->finished(rotation, faces, triangles);
     return triangles;

@@ -17,23 +17,15 @@ bool edges_have_room(const RotationSystem& rs, const std::vector<std::uint32_t>&
     return true;
 }
 
-void record(RotationSystem& rs, Faces& faces, std::vector<LocalTriangle>& triangles,
-            std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    count_triangle_edge(rs, a, b);
-    count_triangle_edge(rs, b, c);
-    count_triangle_edge(rs, c, a);
-    faces.mark_recorded_triangle(a, b);
-    triangles.push_back({a, b, c});
-}
-
 // Closes the quad a→b→c→d with two triangles on the diagonal {a, c} or {b, d} with the larger
 // smallest angle, among the diagonals that are not edges yet. When a diagonal lies inside the
 // face in the rotation it is inserted there (a true face split); when the points are so nearly
 // collinear that neither does, the two triangles are only recorded: this is the last phase, so
 // the rotation is not needed any more, and `extra` keeps one diagonal from being used twice.
-bool close_quad(RotationSystem& rs, Faces& faces, const std::vector<std::uint32_t>& q,
-                std::set<std::pair<std::uint32_t, std::uint32_t>>& extra,
-                std::vector<LocalTriangle>& triangles, bool& inside_rotation) {
+bool close_quad(Embedding& e, const std::vector<std::uint32_t>& q,
+                std::set<std::pair<std::uint32_t, std::uint32_t>>& extra, bool& inside_rotation) {
+    RotationSystem& rs = e.rotation;
+    Faces& faces = e.faces;
     auto diagonal_free = [&](std::uint32_t a, std::uint32_t c) {
         return a != c && !rs.adjacent(a, c) && !extra.count({std::min(a, c), std::max(a, c)});
     };
@@ -58,21 +50,23 @@ bool close_quad(RotationSystem& rs, Faces& faces, const std::vector<std::uint32_
     if (inside_rotation) {
         const auto [d1, d2] = rs.insert_edge(a, c);
         faces.split(d1, d2);
-        record(rs, faces, triangles, a, b, c);
-        record(rs, faces, triangles, a, c, d);
+        e.record_triangle(a, b, c);
+        e.record_triangle(a, c, d);
     } else {
         extra.insert({std::min(a, c), std::max(a, c)});
         faces.mark_recorded_triangle(a, b); // the quad is closed: nothing may enter it any more
-        triangles.push_back({a, b, c});
-        triangles.push_back({a, c, d});
+        e.triangles.push_back({a, b, c});
+        e.triangles.push_back({a, c, d});
     }
     return true;
 }
 
 } // namespace
 
-SmallHoleStats close_small_holes(RotationSystem& rs, Faces& faces,
-                                 std::vector<LocalTriangle>& triangles, Observer* observer) {
+SmallHoleStats close_small_holes(Embedding& e) {
+    const RotationSystem& rs = e.rotation;
+    const Faces& faces = e.faces;
+    const std::vector<LocalTriangle>& triangles = e.triangles;
     SmallHoleStats stats;
     std::set<std::pair<std::uint32_t, std::uint32_t>> extra;
     for (std::uint32_t v = 0; v < rs.vertex_count(); ++v)
@@ -87,18 +81,14 @@ SmallHoleStats close_small_holes(RotationSystem& rs, Faces& faces,
             if (!edges_have_room(rs, cycle)) continue;
             const std::size_t before = triangles.size();
             if (cycle.size() == 3) {
-                record(rs, faces, triangles, cycle[0], cycle[1], cycle[2]);
+                e.record_triangle(cycle[0], cycle[1], cycle[2]);
                 ++stats.triangles_closed;
-                if (observer)
-                    observer->edge_inserted(Phase::Ears, cycle[0], cycle[1], rs, faces, triangles,
-                                            1);
-            } else if (bool inside = false; cycle.size() == 4 && close_quad(rs, faces, cycle, extra,
-                                                                            triangles, inside)) {
+                e.edge_inserted(Phase::Ears, cycle[0], cycle[1], 1);
+            } else if (bool inside = false;
+                       cycle.size() == 4 && close_quad(e, cycle, extra, inside)) {
                 ++(inside ? stats.quads_split : stats.quads_recorded_only);
                 const LocalTriangle& t = triangles.back();
-                if (observer && inside)
-                    observer->edge_inserted(Phase::Ears, t[0], t[1], rs, faces, triangles,
-                                            triangles.size() - before);
+                if (inside) e.edge_inserted(Phase::Ears, t[0], t[1], triangles.size() - before);
             }
         }
     return stats;

@@ -1,10 +1,7 @@
 // Closing the tiny faces that the other phases leave open (deviation D-23).
 #pragma once
 
-#include "rsr/faces.h"
-#include "rsr/observer.h"
-
-#include <vector>
+#include "rsr/embedding.h"
 
 namespace hrsr::rsr {
 
@@ -21,7 +18,6 @@ struct SmallHoleStats {
 /// rule of §5.5.2 and the side rules of the ears on nearly collinear points; a real hole in
 /// the data has more boundary points than that. Faces are visited in order of their first dart
 /// (vertex, position), so the result is deterministic.
-SmallHoleStats close_small_holes(RotationSystem& rotation, Faces& faces,
-                                 std::vector<LocalTriangle>& triangles, Observer* observer);
+SmallHoleStats close_small_holes(Embedding& embedding);
 
 } // namespace hrsr::rsr
