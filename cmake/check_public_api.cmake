@@ -16,15 +16,18 @@ foreach(h IN LISTS public)
   endif()
 endforeach()
 
-# check_file(FILE WHAT): every quoted include of FILE is next to it or public.
+# check_file(FILE WHAT): every quoted include of FILE is next to it (in the front end's own
+# folder, not reached through ../vcg_ext) or public; an include in angle brackets that names a
+# header of vcg_ext/ must be public too.
 function(check_file file what)
-  file(STRINGS "${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
+  file(STRINGS "${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]")
   get_filename_component(dir "${file}" DIRECTORY)
   foreach(line IN LISTS lines)
-    string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"([^\"]+)\".*" "\\1" inc "${line}")
+    string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*([<\"])([^>\"]+)[>\"].*" "\\1\\2" inc "${line}")
+    string(SUBSTRING "${inc}" 0 1 quote)
+    string(SUBSTRING "${inc}" 1 -1 inc)
     if(inc IN_LIST public)
-      if(what STREQUAL "public header")
-        get_filename_component(pdir "${SOURCE_DIR}/vcg_ext/${inc}" DIRECTORY)
+      if(what STREQUAL "public header" AND quote STREQUAL "\"")
         get_filename_component(own "${dir}/${inc}" ABSOLUTE)
         # "x.h" from vcg_ext/io/ would be io/x.h, not the public x.h
         if(EXISTS "${own}" AND NOT own STREQUAL "${SOURCE_DIR}/vcg_ext/${inc}")
@@ -33,7 +36,15 @@ function(check_file file what)
       endif()
       continue()
     endif()
-    if(NOT what STREQUAL "public header" AND EXISTS "${dir}/${inc}")
+    if(quote STREQUAL "<")
+      if(EXISTS "${SOURCE_DIR}/vcg_ext/${inc}")
+        string(APPEND offences "  ${file} (${what}): #include <${inc}> is not a public header\n")
+      endif()
+      continue() # a system or third-party header
+    endif()
+    get_filename_component(own "${dir}/${inc}" ABSOLUTE)
+    string(FIND "${own}" "${SOURCE_DIR}/vcg_ext/" in_library)
+    if(NOT what STREQUAL "public header" AND EXISTS "${own}" AND in_library EQUAL -1)
       continue() # the front end's own header
     endif()
     string(APPEND offences "  ${file} (${what}): #include \"${inc}\" is not a public header\n")
