@@ -3,7 +3,7 @@
 #include "command_line.h"
 #include "io/ply_writer.h"
 #include "io/point_set_reader.h"
-#include "preprocess/preprocess.h"
+#include "normals.h"
 #include "process_stats.h"
 #include "report_json.h"
 #include "terminal_progress.h"
@@ -64,8 +64,8 @@ void run_normals(const NormalsArguments& a) {
     Progress progress(bar.callback());
     Execution exec{a.threads, &progress};
     PreprocessReport report;
-    const PreparedCloud cloud =
-        naming_input(a.input, [&] { return preprocess(input, a.options, exec, report); });
+    const OrientedPoints cloud =
+        naming_input(a.input, [&] { return estimate_normals(input, a.options, exec, report); });
     bar.finish();
 
     // Kept points at their input coordinates (never the normalised or smoothed ones).

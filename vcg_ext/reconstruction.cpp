@@ -1,4 +1,4 @@
-#include "reconstruction.h"
+#include "reconstruction_observed.h"
 
 #include "errors.h"
 #include "hrsr/collapse.h"
@@ -356,6 +356,21 @@ Reconstruction reconstruct(const PointSet& input, const ReconstructionOptions& o
     if (options.method == Method::Rsr)
         return reconstruct_rsr(input, options.rsr, exec, report, observer);
     return reconstruct_hrsr(input, options, exec, report, observer);
+}
+
+Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
+                               const Execution& exec, ReconstructionReport& report) {
+    return reconstruct_rsr(input, options, exec, report, nullptr);
+}
+
+Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptions& options,
+                                const Execution& exec, ReconstructionReport& report) {
+    return reconstruct_hrsr(input, options, exec, report, nullptr, nullptr);
+}
+
+Reconstruction reconstruct(const PointSet& input, const ReconstructionOptions& options,
+                           const Execution& exec, ReconstructionReport& report) {
+    return reconstruct(input, options, exec, report, nullptr);
 }
 
 } // namespace hrsr

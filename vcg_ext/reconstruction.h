@@ -1,14 +1,16 @@
-// The library's entry point: point set in, triangle mesh and report out.
+// The library's entry point: point set in, triangle mesh and report out. Public API (README
+// "Public API"): this header and the ones it includes use no internal type; progress and
+// cancellation are watched through Execution's Progress (progress.h). The tests' observers of
+// every mutation are internal (reconstruction_observed.h).
 #pragma once
 
-#include "hrsr/reexpansion.h"
-#include "mesh/fold_repair.h"
 #include "mesh/mesh_stats.h"
+#include "mesh/triangle_mesh.h"
 #include "options.h"
 #include "parallel.h"
 #include "point_set.h"
 #include "preprocess/report.h"
-#include "rsr/observer.h"
+#include "reconstruction_stats.h"
 
 #include <string>
 #include <utility>
@@ -59,23 +61,18 @@ struct ReconstructionReport {
 };
 
 /// Rotation System Reconstruction of the whole cloud (§2.1): pre-processing, then RsR per
-/// component, then assembly. Throws InvalidOption, InvalidInput or Cancelled. The observer, if
-/// given, watches every component (which are then reconstructed one after the other).
+/// component, then assembly. Throws InvalidOption, InvalidInput or Cancelled.
 Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
-                               const Execution& exec, ReconstructionReport& report,
-                               rsr::Observer* observer = nullptr);
+                               const Execution& exec, ReconstructionReport& report);
 
 /// Hierarchical RsR (§2.2): pre-processing, collapse to a fraction p of the points, RsR on them,
-/// re-expansion by vertex splits (down to l_min). The observer watches the RsR stage.
+/// re-expansion by vertex splits (down to l_min).
 Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptions& options,
-                                const Execution& exec, ReconstructionReport& report,
-                                rsr::Observer* observer = nullptr,
-                                ReexpansionObserver* reexpansion_observer = nullptr);
+                                const Execution& exec, ReconstructionReport& report);
 
 /// Validates every option (InvalidOption names the first bad one, whichever method uses it), then
 /// dispatches on options.method.
 Reconstruction reconstruct(const PointSet& input, const ReconstructionOptions& options,
-                           const Execution& exec, ReconstructionReport& report,
-                           rsr::Observer* observer = nullptr);
+                           const Execution& exec, ReconstructionReport& report);
 
 } // namespace hrsr

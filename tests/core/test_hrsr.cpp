@@ -1,7 +1,7 @@
 // HRsR: collapse → RsR → re-expansion (ALGORITHM.md §6–8, §13 items 8–11).
 #include "errors.h"
 #include "hrsr/crossings.h"
-#include "reconstruction.h"
+#include "reconstruction_observed.h"
 #include "samplers.h"
 #include "vcg_mesh.h"
 

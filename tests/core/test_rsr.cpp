@@ -6,7 +6,7 @@
 #include "io/point_set_reader.h"
 #include "mesh/mesh_stats.h"
 #include "preprocess/preprocess.h"
-#include "reconstruction.h"
+#include "reconstruction_observed.h"
 #include "rsr/reconstruct_component.h"
 #include "rsr_invariants.h"
 #include "samplers.h"

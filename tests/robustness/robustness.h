@@ -3,7 +3,7 @@
 #pragma once
 
 #include "errors.h"
-#include "reconstruction.h"
+#include "reconstruction_observed.h"
 
 #include <gtest/gtest.h>
 

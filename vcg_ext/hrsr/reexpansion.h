@@ -6,21 +6,11 @@
 #include "mesh/triangle_mesh.h"
 #include "options.h"
 #include "parallel.h"
+#include "reconstruction_stats.h"
 
 #include <vector>
 
 namespace hrsr {
-
-struct ReexpansionStats {
-    std::size_t records = 0;           ///< collapse records available
-    std::size_t replayed = 0;          ///< splits performed
-    std::size_t skipped_no_vertex = 0; ///< node never reached the mesh: its latent point is dropped
-    std::size_t failed_no_pair = 0;    ///< no split pair: latent aliased to the kept vertex (D-16)
-    std::size_t unresolved_crossings = 0; ///< splits done with a crossing left
-    std::size_t crossing_flips = 0, triangles_removed = 0, improvement_flips = 0;
-    std::size_t merged_by_l_min = 0; ///< latent points aliased because of l_min
-    bool stopped_at_l_min = false;
-};
 
 struct ReexpandedMesh {
     std::vector<std::uint32_t> vertex_node; ///< per vertex: the node (point) it stands for

@@ -4,18 +4,12 @@
 #include "mesh/triangle_mesh.h"
 #include "parallel.h"
 #include "point_set.h"
+#include "reconstruction_stats.h"
 
 #include <cstddef>
 #include <vector>
 
 namespace hrsr {
-
-struct FoldRepairStats {
-    std::size_t pairs_before = 0; ///< intersecting triangle pairs when the repair started
-    std::size_t pairs_after = 0;  ///< left when it stopped
-    std::size_t flips = 0;
-    std::size_t rounds = 0; ///< rounds that flipped at least one edge
-};
 
 /// D-26. RsR and the re-expansion test crossings only in tangent planes, so the output can fold
 /// in 3-D: triangles around a vertex then overlap. This finds the intersecting pairs (the rule

@@ -1,0 +1,30 @@
+// Counts the report gives for the phases that edit the output mesh: the fold repair (both
+// methods) and HRsR's re-expansion. Plain structs, part of the public API (reconstruction.h);
+// mesh/fold_repair.h and hrsr/reexpansion.h, which fill them, include this header.
+#pragma once
+
+#include <cstddef>
+
+namespace hrsr {
+
+/// D-26 (mesh/fold_repair.h), on the output mesh.
+struct FoldRepairStats {
+    std::size_t pairs_before = 0; ///< intersecting triangle pairs when the repair started
+    std::size_t pairs_after = 0;  ///< left when it stopped
+    std::size_t flips = 0;
+    std::size_t rounds = 0; ///< rounds that flipped at least one edge
+};
+
+/// HRsR's re-expansion (hrsr/reexpansion.h, ALGORITHM.md §8).
+struct ReexpansionStats {
+    std::size_t records = 0;           ///< collapse records available
+    std::size_t replayed = 0;          ///< splits performed
+    std::size_t skipped_no_vertex = 0; ///< node never reached the mesh: its latent point is dropped
+    std::size_t failed_no_pair = 0;    ///< no split pair: latent aliased to the kept vertex (D-16)
+    std::size_t unresolved_crossings = 0; ///< splits done with a crossing left
+    std::size_t crossing_flips = 0, triangles_removed = 0, improvement_flips = 0;
+    std::size_t merged_by_l_min = 0; ///< latent points aliased because of l_min
+    bool stopped_at_l_min = false;
+};
+
+} // namespace hrsr
