@@ -118,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(
     surface_case_name);
 
 // The triple torus at p = 0.5 keeps its genus and closes, but one of its 15,000 splits leaves a
-// tangent-plane crossing unresolved (docs/STATUS.md, gap 7): tested at 0.25 and 0.125 here.
+// tangent-plane crossing unresolved (docs/STATUS.md, gap 12): tested at 0.25 and 0.125 here.
 INSTANTIATE_TEST_SUITE_P(AnalyticGenus3, HrsrSurface,
                          ::testing::Combine(::testing::Values(Case{"triple_torus", triple_torus,
                                                                    3}),

@@ -178,7 +178,7 @@ INSTANTIATE_TEST_SUITE_P(
         SurfaceCase{"DoubleTorus_Graded_40k", Shape::DoubleTorus, 40000, Density::Graded, 2},
         // At 5k the triple torus is closed with genus 3 too (test_topology_defaults.cpp), but one
         // triangle closed by D-23 at a junction (147° angle) winds against its vertices' normals,
-        // which this test also checks (docs/STATUS.md gap 6).
+        // which this test also checks (docs/STATUS.md gap 13).
         SurfaceCase{"TripleTorus_Uniform_10k", Shape::TripleTorus, 10000, Density::Uniform, 3},
         SurfaceCase{"TripleTorus_Graded_30k", Shape::TripleTorus, 30000, Density::Graded, 3}),
     case_name);
@@ -391,7 +391,7 @@ INSTANTIATE_TEST_SUITE_P(SharedData, RsrClosedModel,
 
 // The feline's wings and tail are 2–3 units thick against a median vertex spacing of 1.6 (and
 // its vertices include near-coincident pairs): there the estimated normals flip in patches and
-// the rotation folds, so RsR leaves holes (docs/STATUS.md, known gap 3). Its topology is still
+// the rotation folds, so RsR leaves holes (docs/STATUS.md, known gap 1). Its topology is still
 // right: the surface has genus 2 once the holes are counted as boundary loops (χ = 2 − 2g − b).
 // Measured at n = 20: 40,654 of 40,751 triangles in one piece, 653 of 61,453 edges on holes.
 TEST(RsrModelOfKnownGenusWithHoles, FelineIsOnePieceOfGenus2) {
