@@ -1,6 +1,6 @@
 #include "hrsr/unsampled_triangles.h"
 
-#include "knn.h"
+#include "hrsr/input_reach.h"
 #include "mesh/small_holes_fill.h"
 #include "options.h"
 
@@ -153,16 +153,13 @@ std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
     if (queried.empty()) return 0;
 
     // reach[v]: constants::kOverlongFactor times the rank-th neighbour distance of v's point
-    // (infinite where not queried).
+    // (infinite where not queried); the same reach as D-31's.
+    std::vector<std::uint32_t> queried_points;
+    for (std::uint32_t v : queried) queried_points.push_back(vertex_point[v]);
+    const std::vector<double> distance = input_reach(points, queried_points, rank, exec);
     std::vector<double> reach(vertices, std::numeric_limits<double>::infinity());
-    const KnnIndex index(points);
-    parallel_for(exec, queried.size(), [&](std::size_t i) {
-        thread_local std::vector<Neighbour> found;
-        const std::uint32_t v = queried[i];
-        index.neighbours_of(vertex_point[v], rank, found);
-        if (int(found.size()) == rank)
-            reach[v] = constants::kOverlongFactor * std::sqrt(found.back().squared_distance);
-    });
+    for (std::size_t i = 0; i < queried.size(); ++i)
+        reach[queried[i]] = constants::kOverlongFactor * distance[i];
     std::vector<std::uint8_t> overlong(triangles.size(), 0);
     bool any = false;
     for (std::size_t t = 0; t < triangles.size(); ++t)
