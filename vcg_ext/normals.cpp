@@ -9,7 +9,7 @@ namespace hrsr {
 OrientedPoints estimate_normals(const PointSet& input, const PreprocessOptions& options,
                                 const Execution& exec, PreprocessReport& report) {
     PreparedCloud cloud = preprocess(input, options, exec, report);
-    return {std::move(cloud.input_index), std::move(cloud.normals)};
+    return {raw(cloud.input_index.values()), std::move(cloud.normals)};
 }
 
 } // namespace hrsr

@@ -4,6 +4,7 @@
 #include "hrsr/collapse.h"
 #include "hrsr/input_reach.h"
 #include "hrsr/unsampled_triangles.h"
+#include "index_types.h"
 #include "mesh/fans.h"
 #include "mesh/fold_repair.h"
 #include "mesh/small_holes_fill.h"
@@ -37,23 +38,27 @@ private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-/// A mesh over a subset of a cloud's points, manifold after the fan split (§5.8).
+/// A mesh over a subset of a cloud's points (Point: the cloud's index space), manifold after
+/// the fan split (§5.8).
+template <class Point>
 struct CompactMesh {
-    std::vector<std::uint32_t> vertex_point; ///< per vertex: the cloud point (copies share it)
-    std::vector<Triangle> triangles;         ///< over vertices
-    std::vector<std::uint32_t> unused;       ///< cloud points in no triangle
+    IndexVector<VertexIndex, Point> vertex_point; ///< the cloud point (copies share it)
+    std::vector<Triangle> triangles;              ///< over vertices
+    std::vector<Point> unused;                    ///< cloud points in no triangle
     std::size_t copies = 0;
 };
 
 // Used points become vertices in point order; non-manifold ones get one copy per extra fan.
-CompactMesh compact(std::size_t points, std::vector<Triangle> triangles) {
-    CompactMesh m;
+// `triangles` are over the points on entry, over the vertices on return.
+template <class Point>
+CompactMesh<Point> compact(std::size_t points, std::vector<Triangle> triangles) {
+    CompactMesh<Point> m;
     std::vector<std::uint32_t> vertex_of(points, ~0u), point_of_vertex;
     for (const Triangle& t : triangles)
         for (std::uint32_t p : t) vertex_of[p] = 0;
     for (std::uint32_t p = 0; p < points; ++p) {
         if (vertex_of[p] == ~0u) {
-            m.unused.push_back(p);
+            m.unused.push_back(Point(p));
             continue;
         }
         vertex_of[p] = std::uint32_t(point_of_vertex.size());
@@ -64,7 +69,7 @@ CompactMesh compact(std::size_t points, std::vector<Triangle> triangles) {
     const std::vector<std::uint32_t> copies_of =
         split_non_manifold_vertices(point_of_vertex.size(), triangles);
     m.copies = copies_of.size() - point_of_vertex.size();
-    for (std::uint32_t v : copies_of) m.vertex_point.push_back(point_of_vertex[v]);
+    for (std::uint32_t v : copies_of) m.vertex_point.push_back(Point(point_of_vertex[v]));
     m.triangles = std::move(triangles);
     return m;
 }
@@ -93,7 +98,7 @@ void orient_outward(const std::vector<Vec3>& positions, const MeshStats& stats,
 // The output: vertices at the cloud points they stand for, with their normals; measured into
 // report.mesh.
 Reconstruction make_output(const PreparedCloud& cloud,
-                           const std::vector<std::uint32_t>& vertex_point,
+                           const IndexVector<VertexIndex, PointIndex>& vertex_point,
                            std::vector<Triangle> triangles, bool outward,
                            ReconstructionReport& report) {
     Reconstruction mesh;
@@ -102,10 +107,10 @@ Reconstruction make_output(const PreparedCloud& cloud,
     positions.reserve(vertex_point.size());
     mesh.vertex_input_index.reserve(vertex_point.size());
     mesh.vertex_normals.reserve(vertex_point.size());
-    for (std::uint32_t p : vertex_point) {
-        mesh.vertex_input_index.push_back(cloud.input_index[p]);
-        mesh.vertex_normals.push_back(cloud.normals[p]);
-        positions.push_back(cloud.positions[p]);
+    for (PointIndex p : vertex_point) {
+        mesh.vertex_input_index.push_back(cloud.input_index[p].value());
+        mesh.vertex_normals.push_back(cloud.normals[p.value()]);
+        positions.push_back(cloud.positions[p.value()]);
     }
     std::vector<std::uint32_t> component;
     report.mesh = measure_mesh(positions.size(), mesh.triangles, &component);
@@ -116,15 +121,16 @@ Reconstruction make_output(const PreparedCloud& cloud,
 // D-26 on the finished mesh, in the normalised coordinates everything else uses (D-2): at an
 // offset of 1e12 the input's own are too coarse for a triangle test, and the same cloud moved or
 // scaled must give the same mesh.
-void repair_output_folds(const PreparedCloud& cloud, const std::vector<std::uint32_t>& vertex_point,
-                         int rounds, const Execution& exec, Reconstruction& mesh,
+void repair_output_folds(const PreparedCloud& cloud,
+                         const IndexVector<VertexIndex, PointIndex>& vertex_point, int rounds,
+                         const Execution& exec, Reconstruction& mesh,
                          ReconstructionReport& report) {
     if (rounds <= 0) return;
     if (exec.progress) exec.progress->begin("fold repair");
     Timer timer(report.timings, "fold repair");
     std::vector<Vec3> positions;
     positions.reserve(vertex_point.size());
-    for (std::uint32_t p : vertex_point) positions.push_back(cloud.positions[p]);
+    for (PointIndex p : vertex_point) positions.push_back(cloud.positions[p.value()]);
     report.fold_repair = repair_folds(positions, mesh.triangles, rounds, exec);
 }
 
@@ -189,12 +195,13 @@ void take_rsr_stats(const rsr::CloudMesh& m, ReconstructionReport& report) {
 // §7: the collapsed points, smoothed (tangent mode) and split into components like RsR's input.
 PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collapsed,
                        const PreprocessOptions& options, const Execution& exec,
-                       ReconstructionReport& report, std::vector<std::uint32_t>& dropped) {
+                       ReconstructionReport& report, std::vector<PointIndex>& dropped) {
     PreparedCloud coarse;
     coarse.positions = collapsed.positions;
     coarse.normals = collapsed.normals;
     coarse.weights = collapsed.weights;
-    coarse.input_index = collapsed.survivors; // node ids = indices into `cloud`
+    coarse.node.reserve(collapsed.survivors.size());
+    for (std::uint32_t node : collapsed.survivors) coarse.node.push_back(PointIndex(node));
     coarse.normalisation = cloud.normalisation;
     coarse.smoothed =
         smoothed_positions(coarse.positions, coarse.normals, options, exec, report.preprocess);
@@ -206,30 +213,32 @@ PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collaps
 }
 
 // The coarse survivor at the root of each node's collapse tree.
-std::vector<std::uint32_t> tree_roots(std::size_t nodes,
-                                      const std::vector<CollapseRecord>& records) {
-    std::vector<std::uint32_t> root(nodes);
-    for (std::uint32_t i = 0; i < nodes; ++i) root[i] = i;
+IndexVector<PointIndex, PointIndex> tree_roots(std::size_t nodes,
+                                               const std::vector<CollapseRecord>& records) {
+    IndexVector<PointIndex, PointIndex> root;
+    root.reserve(nodes);
+    for (PointIndex node : KeyRange<PointIndex>(nodes)) root.push_back(node);
     for (std::size_t k = records.size(); k-- > 0;)
-        root[records[k].latent] = root[records[k].active];
+        root[PointIndex(records[k].latent)] = root[PointIndex(records[k].active)];
     return root;
 }
 
 // §8.7: each point that is not its own vertex is merged into another's (l_min, failed splits),
 // dropped with a small coarse component, or left out of every triangle.
-void record_fates(const PreparedCloud& cloud, const std::vector<std::uint32_t>& alias,
-                  const std::vector<std::uint32_t>& root,
-                  const std::vector<std::uint32_t>& dropped_nodes, ReconstructionReport& report) {
-    std::vector<std::uint8_t> dropped_root(cloud.size(), 0);
-    for (std::uint32_t node : dropped_nodes) dropped_root[node] = 1;
-    for (std::uint32_t node = 0; node < cloud.size(); ++node) {
+void record_fates(const PreparedCloud& cloud, IndexView<PointIndex, PointIndex> alias,
+                  const IndexVector<PointIndex, PointIndex>& root,
+                  const std::vector<PointIndex>& dropped_nodes, ReconstructionReport& report) {
+    IndexVector<PointIndex, std::uint8_t> dropped_root(cloud.size(), 0);
+    for (PointIndex node : dropped_nodes) dropped_root[node] = 1;
+    const PointIndex no_node(ReexpandedMesh::kNoNode);
+    for (PointIndex node : cloud.input_index.keys()) {
         if (alias[node] == node) continue;
-        if (alias[node] != ReexpandedMesh::kNoNode)
+        if (alias[node] != no_node)
             ++report.merged_points;
         else if (dropped_root[root[node]])
-            report.dropped_small_coarse_component.push_back(cloud.input_index[node]);
+            report.dropped_small_coarse_component.push_back(cloud.input_index[node].value());
         else
-            report.not_in_triangle.push_back(cloud.input_index[node]);
+            report.not_in_triangle.push_back(cloud.input_index[node].value());
     }
     std::sort(report.not_in_triangle.begin(), report.not_in_triangle.end());
     std::sort(report.dropped_small_coarse_component.begin(),
@@ -250,8 +259,8 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     begin_phase(exec, "assembly");
     std::optional<Timer> assembly(std::in_place, report.timings, "assembly");
     report.small_holes_filled = fill_small_holes(rsr_mesh.triangles, cloud.positions);
-    CompactMesh m = compact(cloud.size(), std::move(rsr_mesh.triangles));
-    for (std::uint32_t p : m.unused) report.not_in_triangle.push_back(cloud.input_index[p]);
+    CompactMesh<PointIndex> m = compact<PointIndex>(cloud.size(), std::move(rsr_mesh.triangles));
+    for (PointIndex p : m.unused) report.not_in_triangle.push_back(cloud.input_index[p].value());
     report.vertex_copies = m.copies;
     Reconstruction mesh =
         make_output(cloud, m.vertex_point, std::move(m.triangles), options.orient_outward, report);
@@ -284,13 +293,13 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
         collapsed = collapse(cloud.positions, cloud.normals, collapse_options, exec);
     }
     report.coarse_points = collapsed.survivors.size();
-    std::vector<std::uint32_t> dropped_nodes;
+    std::vector<PointIndex> dropped_nodes;
     PreparedCloud coarse;
     {
         Timer timer(report.timings, "hand-off");
         coarse = hand_off(cloud, collapsed, pre, exec, report, dropped_nodes);
         // D-31: a coarse handle edge must be one RsR could make on the input points.
-        coarse.handle_reach = input_reach(cloud.positions, coarse.input_index,
+        coarse.handle_reach = input_reach(cloud.positions, coarse.node.values(),
                                           rsr::candidate_rank(pre.k, cloud.size()), exec);
     }
     if (coarse.size() == 0)
@@ -301,12 +310,12 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     rsr::CloudMesh rsr_mesh = rsr::reconstruct_cloud(coarse, options.rsr, exec, observer);
     take_rsr_stats(rsr_mesh, report);
 
-    CompactMesh m = compact(coarse.size(), std::move(rsr_mesh.triangles));
+    CompactMesh<CoarseIndex> m = compact<CoarseIndex>(coarse.size(), std::move(rsr_mesh.triangles));
     report.vertex_copies = m.copies;
-    CoarseMesh coarse_mesh;
-    for (std::uint32_t p : m.vertex_point) {
-        coarse_mesh.vertex_node.push_back(coarse.input_index[p]);
-        coarse_mesh.positions.push_back(coarse.positions[p]);
+    CoarseMesh coarse_mesh; // the re-expansion's own, untyped (one space: its vertices)
+    for (CoarseIndex p : m.vertex_point) {
+        coarse_mesh.vertex_node.push_back(coarse.node[p].value());
+        coarse_mesh.positions.push_back(coarse.positions[p.value()]);
     }
     coarse_mesh.triangles = std::move(m.triangles);
     coarse = PreparedCloud();
@@ -315,7 +324,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
                        : options.reexpand.l_min;
     // Fates of the points that are not their own vertex (§8.7) need the collapse trees; the
     // records themselves go to the re-expansion, which frees them as soon as they are spent.
-    const std::vector<std::uint32_t> root = tree_roots(cloud.size(), collapsed.records);
+    const IndexVector<PointIndex, PointIndex> root = tree_roots(cloud.size(), collapsed.records);
     ReexpandedMesh fine;
     {
         Timer timer(report.timings, "re-expansion");
@@ -333,13 +342,17 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     report.unsampled_triangles_removed =
         remove_unsampled_triangles(fine.triangles, cloud.positions, fine.vertex_node,
                                    rsr::candidate_rank(pre.k, cloud.size()), exec);
-    record_fates(cloud, fine.alias, root, dropped_nodes, report);
+    record_fates(cloud, IndexView<PointIndex, PointIndex>(fine.alias), root, dropped_nodes, report);
     report.small_holes_filled = fill_small_holes(fine.triangles, cloud.positions, fine.vertex_node);
     // The re-expanded mesh is manifold by construction; the fan split is a safety net.
-    CompactMesh out = compact(fine.vertex_node.size(), std::move(fine.triangles));
+    // Its vertices are compacted into the output's: both are VertexIndex, of two meshes.
+    CompactMesh<VertexIndex> out =
+        compact<VertexIndex>(fine.vertex_node.size(), std::move(fine.triangles));
     report.vertex_copies += out.copies;
-    std::vector<std::uint32_t> vertex_point;
-    for (std::uint32_t v : out.vertex_point) vertex_point.push_back(fine.vertex_node[v]);
+    const IndexView<VertexIndex, PointIndex> fine_node(fine.vertex_node);
+    IndexVector<VertexIndex, PointIndex> vertex_point;
+    vertex_point.reserve(out.vertex_point.size());
+    for (VertexIndex v : out.vertex_point) vertex_point.push_back(fine_node[v]);
     Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles),
                                       options.rsr.orient_outward, report);
     assembly.reset();

@@ -19,7 +19,8 @@ struct Agreement {
 Agreement agreement(const PreparedCloud& cloud, const PointSet& reference) {
     std::size_t positive = 0, close = 0;
     for (std::size_t i = 0; i < cloud.size(); ++i) {
-        const double c = cloud.normals[i].dot(reference.normals[cloud.input_index[i]]);
+        const double c =
+            cloud.normals[i].dot(reference.normals[cloud.input_index.values()[i].value()]);
         if (c > 0) ++positive;
         if (std::abs(c) > std::cos(15 * M_PI / 180)) ++close;
     }
@@ -82,7 +83,7 @@ TEST(Orientation, InputNormalsAreKeptAsGiven) {
     EXPECT_EQ(report.normal_origin, NormalOrigin::Input);
     EXPECT_EQ(report.orientation_flips, 0u);
     for (std::size_t i = 0; i < c.size(); ++i)
-        ASSERT_NEAR(c.normals[i].dot(s.normals[c.input_index[i]]), 1.0, 1e-12);
+        ASSERT_NEAR(c.normals[i].dot(s.normals[c.input_index.values()[i].value()]), 1.0, 1e-12);
 }
 
 TEST(PcaNormals, PlaneGivesItsNormal) {

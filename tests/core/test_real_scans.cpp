@@ -29,7 +29,7 @@ TEST(RealScans, BunnyOrientationAgreesWithScannerNormals) {
     const PreparedCloud c = preprocess(cloud, {}, {}, report);
     std::size_t positive = 0;
     for (std::size_t i = 0; i < c.size(); ++i)
-        if (c.normals[i].dot(reference.normals[c.input_index[i]]) > 0) ++positive;
+        if (c.normals[i].dot(reference.normals[c.input_index.values()[i].value()]) > 0) ++positive;
     const double agreement = double(std::max(positive, c.size() - positive)) / double(c.size());
     RecordProperty("orientation_agreement", std::to_string(agreement));
     RecordProperty("points_kept", std::to_string(c.size()));

@@ -51,7 +51,7 @@ TEST(Sanitize, MergesExactDuplicatesIntoTheFirstOccurrence) {
     EXPECT_EQ(report.duplicate_of[52], 8u);
     EXPECT_EQ(c.positions.size(), 50u);
     for (std::size_t a = 1; a < c.input_index.size(); ++a)
-        EXPECT_LT(c.input_index[a - 1], c.input_index[a]);
+        EXPECT_LT(c.input_index.values()[a - 1], c.input_index.values()[a]);
 }
 
 TEST(Sanitize, NormalisesToUnitDiagonalAroundTheBoxCentre) {

@@ -7,15 +7,14 @@
 
 namespace hrsr {
 
-std::vector<double> input_reach(const std::vector<Vec3>& points,
-                                const std::vector<std::uint32_t>& at, int rank,
-                                const Execution& exec) {
+std::vector<double> input_reach(const std::vector<Vec3>& points, const std::vector<PointIndex>& at,
+                                int rank, const Execution& exec) {
     std::vector<double> reach(at.size(), std::numeric_limits<double>::infinity());
     if (at.empty() || rank < 1) return reach;
     const KnnIndex index(points);
     parallel_for(exec, at.size(), [&](std::size_t i) {
         thread_local std::vector<Neighbour> found;
-        index.neighbours_of(at[i], rank, found);
+        index.neighbours_of(at[i].value(), rank, found);
         if (int(found.size()) == rank) reach[i] = std::sqrt(found.back().squared_distance);
     });
     return reach;

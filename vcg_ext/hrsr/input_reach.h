@@ -2,6 +2,7 @@
 // ⌊2k/3⌋-th neighbour (§5.1). HRsR's coarse cloud asks this of the input points (D-31).
 #pragma once
 
+#include "index_types.h"
 #include "parallel.h"
 #include "point_set.h"
 
@@ -10,10 +11,10 @@
 
 namespace hrsr {
 
-/// For each point i of `at`: the distance from points[at[i]] to its `rank`-th nearest other
-/// point, or infinity when the cloud has fewer. Deterministic whatever the thread count.
-std::vector<double> input_reach(const std::vector<Vec3>& points,
-                                const std::vector<std::uint32_t>& at, int rank,
-                                const Execution& exec);
+/// For each point i of `at`: the distance from that point of `points` (the pre-processed cloud)
+/// to its `rank`-th nearest other point, or infinity when the cloud has fewer. Deterministic
+/// whatever the thread count.
+std::vector<double> input_reach(const std::vector<Vec3>& points, const std::vector<PointIndex>& at,
+                                int rank, const Execution& exec);
 
 } // namespace hrsr

@@ -154,8 +154,8 @@ std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
 
     // reach[v]: constants::kOverlongFactor times the rank-th neighbour distance of v's point
     // (infinite where not queried); the same reach as D-31's.
-    std::vector<std::uint32_t> queried_points;
-    for (std::uint32_t v : queried) queried_points.push_back(vertex_point[v]);
+    std::vector<PointIndex> queried_points;
+    for (std::uint32_t v : queried) queried_points.push_back(PointIndex(vertex_point[v]));
     const std::vector<double> distance = input_reach(points, queried_points, rank, exec);
     std::vector<double> reach(vertices, std::numeric_limits<double>::infinity());
     for (std::size_t i = 0; i < queried.size(); ++i)

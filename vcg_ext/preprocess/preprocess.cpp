@@ -182,17 +182,24 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     return cloud;
 }
 
+namespace {
+
+// keep_components over the cloud's own origin map: input_index (the pre-processed cloud) or node
+// (the coarse cloud).
+template <class Key, class Origin>
 PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& split,
-                              std::vector<std::uint32_t>& dropped) {
+                              IndexVector<Key, Origin> PreparedCloud::*origin,
+                              std::vector<Origin>& dropped) {
     PreparedCloud kept;
     kept.normalisation = cloud.normalisation;
     kept.component_count = split.count;
     for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const Origin from = (cloud.*origin)[Key(std::uint32_t(i))];
         if (split.label[i] == ComponentSplit::kDropped) {
-            dropped.push_back(cloud.input_index[i]);
+            dropped.push_back(from);
             continue;
         }
-        kept.input_index.push_back(cloud.input_index[i]);
+        (kept.*origin).push_back(from);
         kept.positions.push_back(cloud.positions[i]);
         kept.smoothed.push_back(cloud.smoothed[i]);
         kept.normals.push_back(cloud.normals[i]);
@@ -200,6 +207,18 @@ PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& 
         kept.component.push_back(split.label[i]);
     }
     return kept;
+}
+
+} // namespace
+
+PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& split,
+                              std::vector<InputIndex>& dropped) {
+    return keep_components(cloud, split, &PreparedCloud::input_index, dropped);
+}
+
+PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& split,
+                              std::vector<PointIndex>& dropped) {
+    return keep_components(cloud, split, &PreparedCloud::node, dropped);
 }
 
 void record_split(const ComponentSplit& split, const Normalisation& normalisation,
@@ -223,9 +242,9 @@ PreparedCloud preprocess(const PointSet& input, const PreprocessOptions& options
     }
     graph = CsrGraph();
     record_split(split, cloud.normalisation, report);
-    std::vector<std::uint32_t> dropped;
+    std::vector<InputIndex> dropped;
     PreparedCloud kept = keep_components(cloud, split, dropped);
-    for (std::uint32_t i : dropped) report.fate[i] = PointFate::SmallComponent;
+    for (InputIndex i : dropped) report.fate[i.value()] = PointFate::SmallComponent;
     propagate_fates_to_duplicates(report);
     if (split.dropped_components > 0)
         report.warnings.push_back(

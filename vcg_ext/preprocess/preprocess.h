@@ -3,6 +3,7 @@
 #pragma once
 
 #include "graph/neighbour_graph.h"
+#include "index_types.h"
 #include "options.h"
 #include "parallel.h"
 #include "point_set.h"
@@ -17,11 +18,14 @@ namespace hrsr {
 
 /// A cleaned cloud with oriented unit normals, in increasing input-index order.
 struct PreparedCloud {
-    std::vector<std::uint32_t> input_index; ///< point -> index in the input point set
-    std::vector<Vec3> positions;            ///< normalised input positions (D-2)
-    std::vector<Vec3> smoothed; ///< normalised smoothed positions (= positions in Euclidean
-                                ///< mode); empty when prepared for the collapse
-    std::vector<Vec3> normals;  ///< unit; consistently oriented per connected piece
+    /// Point -> index in the input point set; empty on HRsR's coarse cloud, which has `node`.
+    IndexVector<PointIndex, InputIndex> input_index;
+    /// HRsR's coarse cloud: coarse point -> the collapse node (pre-processed point) it is.
+    IndexVector<CoarseIndex, PointIndex> node;
+    std::vector<Vec3> positions; ///< normalised input positions (D-2)
+    std::vector<Vec3> smoothed;  ///< normalised smoothed positions (= positions in Euclidean
+                                 ///< mode); empty when prepared for the collapse
+    std::vector<Vec3> normals;   ///< unit; consistently oriented per connected piece
     /// Input points each point stands for (HRsR's coarse cloud: its collapse weight); empty =
     /// one each. RsR measures handle loops in spacings of the input through it (D-27).
     std::vector<std::uint32_t> weights;
@@ -67,7 +71,10 @@ PreparedCloud preprocess(const PointSet& input, const PreprocessOptions& options
 /// The points of `cloud` in kept components, labelled with their component, in the same order;
 /// `dropped` receives the input_index of every other point.
 PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& split,
-                              std::vector<std::uint32_t>& dropped);
+                              std::vector<InputIndex>& dropped);
+/// The same for HRsR's coarse cloud: `dropped` receives the node of every other point.
+PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& split,
+                              std::vector<PointIndex>& dropped);
 
 /// Copies the split's numbers into the report (the cut length in input units).
 void record_split(const ComponentSplit& split, const Normalisation& normalisation,

@@ -86,10 +86,11 @@ void merge_near_duplicates(SanitizedCloud& cloud, PreprocessReport& report) {
     kept.normalisation = cloud.normalisation;
     std::size_t merged = 0;
     for (std::size_t i = 0; i < representative.size(); ++i) {
-        const std::uint32_t input = cloud.input_index[i];
+        const InputIndex input = cloud.input_index[PointIndex(std::uint32_t(i))];
         if (representative[i] != i) {
-            report.fate[input] = PointFate::Duplicate;
-            report.duplicate_of[input] = cloud.input_index[representative[i]];
+            report.fate[input.value()] = PointFate::Duplicate;
+            report.duplicate_of[input.value()] =
+                cloud.input_index[PointIndex(representative[i])].value();
             ++merged;
             continue;
         }
@@ -157,7 +158,7 @@ SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
     if (use_normals) cloud.normals.reserve(kept);
     for (std::uint32_t i = 0; i < n; ++i) {
         if (report.fate[i] != PointFate::Kept) continue;
-        cloud.input_index.push_back(i);
+        cloud.input_index.push_back(InputIndex(i));
         cloud.positions.push_back(input.positions[i]);
         if (!use_normals) continue;
         const Vec3& normal = input.normals[i];

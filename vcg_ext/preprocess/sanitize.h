@@ -1,6 +1,7 @@
 // Validation and cleaning of a raw point set (ALGORITHM.md §4.1, §4.2; D-2, D-3).
 #pragma once
 
+#include "index_types.h"
 #include "options.h"
 #include "point_set.h"
 #include "preprocess/report.h"
@@ -19,8 +20,8 @@ struct Normalisation {
 
 /// The finite, de-duplicated points, in increasing input-index order.
 struct SanitizedCloud {
-    std::vector<std::uint32_t> input_index; ///< kept point -> index in the input
-    std::vector<Vec3> positions;            ///< normalised coordinates
+    IndexVector<PointIndex, InputIndex> input_index; ///< kept point -> index in the input
+    std::vector<Vec3> positions;                     ///< normalised coordinates
     std::vector<Vec3> normals; ///< unit input normals; empty when they must be estimated
     Normalisation normalisation;
 };
