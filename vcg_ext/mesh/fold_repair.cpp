@@ -1,5 +1,6 @@
 #include "mesh/fold_repair.h"
 
+#include "index_types.h"
 #include "mesh/split_mesh.h"
 #include "mesh/triangle_grid.h"
 #include "mesh/welding.h"
@@ -19,6 +20,12 @@ namespace {
 // and a later round works around the corners of earlier flips.
 constexpr int kRegionRings = 6;
 
+// The region's own spaces: its SplitMesh's vertices, and the slots of its face storage. The
+// mesh's vertices and faces are VertexIndex and FaceIndex; the flip search inside the region
+// (Repair) keeps plain face numbers of the mesh.
+using RegionVertex = Index<struct RegionVertexTag>;
+using FaceSlot = Index<struct FaceSlotTag>;
+
 // The part of the mesh the flips may touch: the faces around every vertex within `rings`
 // rings of the pairs' corners, as a SplitMesh of its own (a whole-mesh one costs more than the
 // search). Those vertices are complete: all their faces are in the region, so what can_flip
@@ -30,7 +37,6 @@ public:
         const std::size_t n = positions.size();
         const VertexCorners at = corners_by_vertex(n, triangles);
         // Rings around the pairs' corners, breadth first.
-        constexpr std::uint8_t kFar = 0xff;
         std::vector<std::uint8_t> depth(n, kFar);
         std::vector<std::uint32_t> reached;
         for (const TrianglePair& p : pairs)
@@ -52,61 +58,76 @@ public:
         }
         for (std::uint32_t v : reached)
             for (std::uint32_t e = at.begin(v); e < at.end(v); ++e)
-                global_face_.push_back(at.corner[e] / 3);
+                global_face_.push_back(FaceIndex(at.corner[e] / 3));
         std::sort(global_face_.begin(), global_face_.end());
         global_face_.erase(std::unique(global_face_.begin(), global_face_.end()),
                            global_face_.end());
-        // Local vertices in order of first use, then the SplitMesh.
-        std::vector<std::uint32_t> local(n, kNone);
+        build_mesh(positions, triangles, depth);
+    }
+
+    SplitMesh& mesh() { return *mesh_; }
+    /// The region's face for a face of the mesh, or null when it is outside.
+    SFace* face(FaceIndex global) const { return face_[global]; }
+    FaceIndex global_face(const SFace* f) const {
+        return slot_face_[FaceSlot(std::uint32_t(mesh_->slot(f)))];
+    }
+    VertexIndex global_vertex(const SFace* f, int k) const { return global_vertex_[vertex(f, k)]; }
+    bool complete(const SFace* f, int k) const { return complete_[vertex(f, k)] != 0; }
+    std::size_t faces() const { return global_face_.size(); }
+
+    /// Writes the region's triangles back into the mesh's list.
+    void write_back(std::vector<Triangle>& triangles) const {
+        for (FaceIndex f : global_face_)
+            triangles[f.value()] = {global_vertex(face_[f], 0).value(),
+                                    global_vertex(face_[f], 1).value(),
+                                    global_vertex(face_[f], 2).value()};
+    }
+
+private:
+    static constexpr std::uint8_t kFar = 0xff; ///< depth of a vertex the rings do not reach
+
+    RegionVertex vertex(const SFace* f, int k) const {
+        return RegionVertex(mesh_->vertex_of(f, k));
+    }
+
+    // The region's faces over its own vertices (in order of first use) as a SplitMesh, and the
+    // maps between its faces and the mesh's.
+    void build_mesh(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
+                    const std::vector<std::uint8_t>& depth) {
+        const RegionVertex none(~0u);
+        IndexVector<VertexIndex, RegionVertex> local(positions.size(), none);
         std::vector<Vec3> local_positions;
         std::vector<Triangle> local_triangles;
-        for (std::uint32_t f : global_face_) {
+        for (FaceIndex f : global_face_) {
             Triangle t;
-            for (int k = 0; k < 3; ++k) {
-                std::uint32_t& l = local[triangles[f][std::size_t(k)]];
-                if (l == kNone) {
-                    l = std::uint32_t(global_vertex_.size());
-                    global_vertex_.push_back(triangles[f][std::size_t(k)]);
-                    local_positions.push_back(positions[global_vertex_.back()]);
-                    complete_.push_back(depth[global_vertex_.back()] != kFar);
+            for (std::size_t k = 0; k < 3; ++k) {
+                const VertexIndex v(triangles[f.value()][k]);
+                if (local[v] == none) {
+                    local[v] = global_vertex_.next_key();
+                    global_vertex_.push_back(v);
+                    local_positions.push_back(positions[v.value()]);
+                    complete_.push_back(std::uint8_t(depth[v.value()] != kFar));
                 }
-                t[std::size_t(k)] = l;
+                t[k] = local[v].value();
             }
             local_triangles.push_back(t);
         }
         mesh_ = std::make_unique<SplitMesh>(local_positions, local_triangles,
                                             local_positions.size(), local_triangles.size());
         const std::vector<SFace*> live = mesh_->live_faces(); // in local_triangles' order
-        face_.assign(triangles.size(), nullptr);
-        slot_face_.assign(mesh_->face_slots(), kNone);
+        face_ = IndexVector<FaceIndex, SFace*>(triangles.size(), nullptr);
+        slot_face_ = IndexVector<FaceSlot, FaceIndex>(mesh_->face_slots(), FaceIndex(~0u));
         for (std::size_t i = 0; i < live.size(); ++i) {
             face_[global_face_[i]] = live[i];
-            slot_face_[mesh_->slot(live[i])] = global_face_[i];
+            slot_face_[FaceSlot(std::uint32_t(mesh_->slot(live[i])))] = global_face_[i];
         }
     }
 
-    SplitMesh& mesh() { return *mesh_; }
-    /// The region's face for a face of the mesh, or null when it is outside.
-    SFace* face(std::uint32_t global) const { return face_[global]; }
-    std::uint32_t global_face(const SFace* f) const { return slot_face_[mesh_->slot(f)]; }
-    std::uint32_t global_vertex(const SFace* f, int k) const {
-        return global_vertex_[mesh_->vertex_of(f, k)];
-    }
-    bool complete(const SFace* f, int k) const { return complete_[mesh_->vertex_of(f, k)]; }
-    std::size_t faces() const { return global_face_.size(); }
-
-    /// Writes the region's triangles back into the mesh's list.
-    void write_back(std::vector<Triangle>& triangles) const {
-        for (std::uint32_t f : global_face_)
-            triangles[f] = {global_vertex(face_[f], 0), global_vertex(face_[f], 1),
-                            global_vertex(face_[f], 2)};
-    }
-
-private:
-    static constexpr std::uint32_t kNone = ~0u;
-    std::vector<std::uint32_t> global_face_, global_vertex_, slot_face_;
-    std::vector<bool> complete_;
-    std::vector<SFace*> face_;
+    std::vector<FaceIndex> global_face_; ///< the region's faces, increasing
+    IndexVector<RegionVertex, VertexIndex> global_vertex_;
+    IndexVector<RegionVertex, std::uint8_t> complete_; ///< all its faces are in the region
+    IndexVector<FaceSlot, FaceIndex> slot_face_;
+    IndexVector<FaceIndex, SFace*> face_;
     std::unique_ptr<SplitMesh> mesh_;
 };
 
@@ -221,12 +242,12 @@ private:
     const std::vector<std::uint32_t>& faces_around(const TrianglePair& p) {
         around_.clear();
         for (std::uint32_t f : {p.first, p.second}) {
-            const SFace* face = region_.face(f);
+            const SFace* face = region_.face(FaceIndex(f));
             for (int k = 0; face && k < 3; ++k) {
                 if (!region_.complete(face, k)) continue;
                 mesh_.star(mesh_.vertex_of(face, k), star_);
                 for (const SFace* w : star_.wedges)
-                    if (w) around_.push_back(region_.global_face(w));
+                    if (w) around_.push_back(region_.global_face(w).value());
             }
         }
         std::sort(around_.begin(), around_.end());
@@ -242,12 +263,12 @@ private:
     // Flips the first edge of face f whose flip lowers the intersections of its two faces;
     // returns the other face of that edge, or kNoFace. Faces flipped this round stay as they are.
     std::uint32_t try_flips(std::uint32_t f, const std::vector<std::uint8_t>& waiting) {
-        SFace* face = region_.face(f);
+        SFace* face = region_.face(FaceIndex(f));
         if (!face) return kNoFace;
         for (int z = 0; z < 3; ++z) {
             SFace* across = face->FFp(z);
             if (across == face) continue; // a border edge
-            const std::uint32_t g = region_.global_face(across);
+            const std::uint32_t g = region_.global_face(across).value();
             // A flip can only lower the count of faces that intersect something.
             if (waiting[g] || (!intersecting_[f] && !intersecting_[g])) continue;
             // can_flip needs the whole neighbourhood of the edge's endpoints and of the corners
@@ -260,7 +281,7 @@ private:
             const Triangle tf = geometry_.triangle(f), tg = geometry_.triangle(g);
             const std::uint32_t u = tf[z], w = tf[(z + 1) % 3], x = tf[(z + 2) % 3];
             const std::uint32_t y =
-                representative_[region_.global_vertex(across, (face->FFi(z) + 2) % 3)];
+                representative_[region_.global_vertex(across, (face->FFi(z) + 2) % 3)].value();
             const Triangle nf{x, u, y}, ng{y, w, x}; // the flipped pair, wound the same way
             if (geometry_.degenerate(nf) || geometry_.degenerate(ng)) continue;
             const double old_fold = geometry_.normal(tf).dot(geometry_.normal(tg));
@@ -274,10 +295,10 @@ private:
             mesh_.flip(face, z);
             // vcglib's FlipEdge rewrites both faces; read their corners back.
             for (std::uint32_t h : {f, g}) {
-                const SFace* s = region_.face(h);
-                geometry_.set(h, {representative_[region_.global_vertex(s, 0)],
-                                  representative_[region_.global_vertex(s, 1)],
-                                  representative_[region_.global_vertex(s, 2)]});
+                const SFace* s = region_.face(FaceIndex(h));
+                geometry_.set(h, {representative_[region_.global_vertex(s, 0)].value(),
+                                  representative_[region_.global_vertex(s, 1)].value(),
+                                  representative_[region_.global_vertex(s, 2)].value()});
                 // Filed again under its new cells (the old entries are filtered by box).
                 grid_.for_each_cell(geometry_.box(geometry_.triangle(h)),
                                     [&](std::uint64_t c) { flipped_in_cell_[c].push_back(h); });
@@ -311,7 +332,7 @@ private:
 
     Region& region_;
     SplitMesh& mesh_;
-    const std::vector<std::uint32_t>& representative_;
+    const IndexView<VertexIndex, VertexIndex> representative_; ///< welded ids
     TriangleGeometry& geometry_;
     const TriangleGrid& grid_;
     std::vector<std::uint32_t> near_, around_;
