@@ -200,8 +200,7 @@ PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collaps
     coarse.positions = collapsed.positions;
     coarse.normals = collapsed.normals;
     coarse.weights = collapsed.weights;
-    coarse.node.reserve(collapsed.survivors.size());
-    for (std::uint32_t node : collapsed.survivors) coarse.node.push_back(PointIndex(node));
+    coarse.node = collapsed.survivors;
     coarse.normalisation = cloud.normalisation;
     coarse.smoothed =
         smoothed_positions(coarse.positions, coarse.normals, options, exec, report.preprocess);

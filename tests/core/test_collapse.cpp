@@ -23,7 +23,7 @@ void expect_collapse_invariants(const PointSet& s, const CollapsedCloud& c) {
     EXPECT_EQ(c.survivors.size() + c.records.size(), n);
     // Every point is a survivor or the latent of exactly one record; latents never reappear.
     std::vector<int> role(n, 0);
-    for (std::uint32_t v : c.survivors) ++role[v];
+    for (PointIndex v : c.survivors) ++role[v.value()];
     for (const CollapseRecord& r : c.records) {
         ++role[r.latent];
         EXPECT_LT(r.active, r.latent); // the smaller id survives
@@ -39,7 +39,7 @@ void expect_collapse_invariants(const PointSet& s, const CollapsedCloud& c) {
     }
     std::size_t total = 0;
     for (std::size_t k = 0; k < c.survivors.size(); ++k) {
-        const std::uint32_t v = c.survivors[k];
+        const std::uint32_t v = c.survivors[CoarseIndex(std::uint32_t(k))].value();
         EXPECT_EQ(c.weights[k], count[v]);
         total += c.weights[k];
         EXPECT_LT((c.positions[k] - sum[v] / double(count[v])).Norm(), 1e-12);

@@ -160,7 +160,7 @@ CollapsedCloud collapse(const std::vector<Vec3>& positions, const std::vector<Ve
     }
     for (std::uint32_t i = 0; i < n; ++i) {
         if (!collapser.alive(i)) continue;
-        result.survivors.push_back(i);
+        result.survivors.push_back(PointIndex(i));
         result.positions.push_back(collapser.positions()[i]);
         result.normals.push_back(collapser.normals()[i]);
         result.weights.push_back(collapser.weights()[i]);

@@ -2,6 +2,7 @@
 // of the points is left, recording every merge so that it can be replayed as a vertex split.
 #pragma once
 
+#include "index_types.h"
 #include "options.h"
 #include "parallel.h"
 #include "point_set.h"
@@ -11,20 +12,21 @@
 
 namespace hrsr {
 
-/// One merge of node `latent` into node `active` (ids are indices of the collapsed-from cloud).
+/// One merge of node `latent` into node `active` (ids are indices of the collapsed-from cloud,
+/// PointIndex values: the collapse and the re-expansion work inside that one space).
 struct CollapseRecord {
     std::uint32_t active, latent;
     Vec3 active_before, latent_before; ///< positions just before the merge
 };
 
 struct CollapsedCloud {
-    std::vector<std::uint32_t> survivors; ///< node ids left, increasing
-    std::vector<Vec3> positions;          ///< per survivor: weighted mean of its merged points
-    std::vector<Vec3> normals;            ///< per survivor: unit weighted mean normal (D-9)
-    std::vector<std::uint32_t> weights;   ///< per survivor: number of points merged into it
-    std::vector<CollapseRecord> records;  ///< in the order they happened
-    std::size_t budget = 0;               ///< collapses asked for
-    bool ran_out_of_edges = false;        ///< stopped before the budget: no valid edge left
+    IndexVector<CoarseIndex, PointIndex> survivors; ///< coarse point -> its node, increasing
+    std::vector<Vec3> positions;         ///< per survivor: weighted mean of its merged points
+    std::vector<Vec3> normals;           ///< per survivor: unit weighted mean normal (D-9)
+    std::vector<std::uint32_t> weights;  ///< per survivor: number of points merged into it
+    std::vector<CollapseRecord> records; ///< in the order they happened
+    std::size_t budget = 0;              ///< collapses asked for
+    bool ran_out_of_edges = false;       ///< stopped before the budget: no valid edge left
 };
 
 /// Collapses the cloud (positions: the algorithm's unsmoothed coordinates; normals: unit,
