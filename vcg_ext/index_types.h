@@ -97,8 +97,8 @@ private:
     std::vector<Value> values_;
 };
 
-/// A read-only typed view of a plain std::uint32_t table that a phase keeps internally (the
-/// re-expansion's): the phase stays untyped, its results are read through their spaces.
+/// A read-only typed view of a plain std::uint32_t table made by code shared with other users
+/// (e.g. same_position_representatives, the welded ids fold repair maps vertices through).
 template <class Key, class Value>
 class IndexView {
 public:

@@ -224,15 +224,14 @@ IndexVector<PointIndex, PointIndex> tree_roots(std::size_t nodes,
 
 // §8.7: each point that is not its own vertex is merged into another's (l_min, failed splits),
 // dropped with a small coarse component, or left out of every triangle.
-void record_fates(const PreparedCloud& cloud, IndexView<PointIndex, PointIndex> alias,
+void record_fates(const PreparedCloud& cloud, const IndexVector<PointIndex, PointIndex>& alias,
                   const IndexVector<PointIndex, PointIndex>& root,
                   const std::vector<PointIndex>& dropped_nodes, ReconstructionReport& report) {
     IndexVector<PointIndex, std::uint8_t> dropped_root(cloud.size(), 0);
     for (PointIndex node : dropped_nodes) dropped_root[node] = 1;
-    const PointIndex no_node(ReexpandedMesh::kNoNode);
     for (PointIndex node : cloud.input_index.keys()) {
         if (alias[node] == node) continue;
-        if (alias[node] != no_node)
+        if (alias[node] != ReexpandedMesh::kNoNode)
             ++report.merged_points;
         else if (dropped_root[root[node]])
             report.dropped_small_coarse_component.push_back(cloud.input_index[node].value());
@@ -311,9 +310,9 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
 
     CompactMesh<CoarseIndex> m = compact<CoarseIndex>(coarse.size(), std::move(rsr_mesh.triangles));
     report.vertex_copies = m.copies;
-    CoarseMesh coarse_mesh; // the re-expansion's own, untyped (one space: its vertices)
+    CoarseMesh coarse_mesh;
     for (CoarseIndex p : m.vertex_point) {
-        coarse_mesh.vertex_node.push_back(coarse.node[p].value());
+        coarse_mesh.vertex_node.push_back(coarse.node[p]);
         coarse_mesh.positions.push_back(coarse.positions[p.value()]);
     }
     coarse_mesh.triangles = std::move(m.triangles);
@@ -341,17 +340,16 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     report.unsampled_triangles_removed =
         remove_unsampled_triangles(fine.triangles, cloud.positions, fine.vertex_node,
                                    rsr::candidate_rank(pre.k, cloud.size()), exec);
-    record_fates(cloud, IndexView<PointIndex, PointIndex>(fine.alias), root, dropped_nodes, report);
+    record_fates(cloud, fine.alias, root, dropped_nodes, report);
     report.small_holes_filled = fill_small_holes(fine.triangles, cloud.positions, fine.vertex_node);
     // The re-expanded mesh is manifold by construction; the fan split is a safety net.
     // Its vertices are compacted into the output's: both are VertexIndex, of two meshes.
     CompactMesh<VertexIndex> out =
         compact<VertexIndex>(fine.vertex_node.size(), std::move(fine.triangles));
     report.vertex_copies += out.copies;
-    const IndexView<VertexIndex, PointIndex> fine_node(fine.vertex_node);
     IndexVector<VertexIndex, PointIndex> vertex_point;
     vertex_point.reserve(out.vertex_point.size());
-    for (VertexIndex v : out.vertex_point) vertex_point.push_back(fine_node[v]);
+    for (VertexIndex v : out.vertex_point) vertex_point.push_back(fine.vertex_node[v]);
     Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles),
                                       options.rsr.orient_outward, report);
     assembly.reset();

@@ -88,8 +88,7 @@ ReexpansionStart reexpansion_start(const rsr::ComponentCloud& cloud,
     for (const rsr::LocalTriangle& t : local)
         m.mesh.triangles.push_back({vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]]});
     for (std::uint32_t v : split_non_manifold_vertices(point_of_vertex.size(), m.mesh.triangles)) {
-        m.mesh.vertex_node.push_back(
-            m.collapsed.survivors[CoarseIndex(point_of_vertex[v])].value());
+        m.mesh.vertex_node.push_back(m.collapsed.survivors[CoarseIndex(point_of_vertex[v])]);
         m.mesh.positions.push_back(m.collapsed.positions[point_of_vertex[v]]);
     }
     return m;

@@ -45,9 +45,9 @@ std::vector<Triangle> grid_triangles(const std::vector<Vec3>& p, int n, int lo, 
     return t;
 }
 
-std::vector<std::uint32_t> identity(std::size_t n) {
-    std::vector<std::uint32_t> v(n);
-    std::iota(v.begin(), v.end(), 0u);
+IndexVector<VertexIndex, PointIndex> identity(std::size_t n) {
+    IndexVector<VertexIndex, PointIndex> v;
+    for (std::uint32_t i = 0; i < n; ++i) v.push_back(PointIndex(i));
     return v;
 }
 

@@ -25,10 +25,10 @@ public:
         const std::uint32_t* end() const { return first + size; }
     };
 
-    NodeVertices(std::size_t nodes, const std::vector<std::uint32_t>& coarse_vertex_node)
+    NodeVertices(std::size_t nodes, const IndexVector<VertexIndex, PointIndex>& coarse_vertex_node)
         : word_(nodes, kNone) {
         for (std::uint32_t v = 0; v < coarse_vertex_node.size(); ++v) {
-            std::uint32_t& w = word_[coarse_vertex_node[v]];
+            std::uint32_t& w = word_[coarse_vertex_node[VertexIndex(v)].value()];
             if (w == kNone) {
                 w = v;
                 continue;
@@ -67,14 +67,14 @@ public:
           vertices_of_(input.points.size(), input.coarse.vertex_node),
           vertex_node_(input.coarse.vertex_node) {
         vertex_node_.reserve(input.coarse.vertex_node.size() + input.records.size());
-        alias_.assign(input.points.size(), ReexpandedMesh::kNoNode);
-        for (std::uint32_t node : input.coarse.vertex_node) alias_[node] = node;
+        alias_ = IndexVector<PointIndex, PointIndex>(input.points.size(), ReexpandedMesh::kNoNode);
+        for (PointIndex node : input.coarse.vertex_node) alias_[node] = node;
     }
 
     // Aliasing (D-16): b is represented by a's vertices from now on.
     void alias(const CollapseRecord& r) {
         vertices_of_.share(r.active, r.latent);
-        alias_[r.latent] = alias_[r.active];
+        alias_[PointIndex(r.latent)] = alias_[PointIndex(r.active)];
     }
 
     void replay(const CollapseRecord& r, ReexpansionStats& stats) {
@@ -102,9 +102,9 @@ public:
             const SplitChoice choice = choose_split(mesh_, star, r.active_before, r.latent_before);
             if (!choice.found) continue;
             const std::uint32_t c2 = mesh_.split(c, star, choice.a, choice.b, r.latent_before);
-            vertex_node_.push_back(r.latent);
+            vertex_node_.push_back(PointIndex(r.latent));
             vertices_of_.set(r.latent, c2);
-            alias_[r.latent] = r.latent;
+            alias_[PointIndex(r.latent)] = PointIndex(r.latent);
             ++stats.replayed;
             if (unresolved) ++stats.unresolved_crossings;
             stats.improvement_flips += improve_around(mesh_, c2, options_);
@@ -120,8 +120,8 @@ public:
     // Every vertex at its own node's input point (the last move of a node restores it anyway
     // when every record was replayed; after a stop this is the snap-to-input of §8.1).
     void snap_to_input() {
-        for (std::uint32_t v = 0; v < vertex_node_.size(); ++v)
-            mesh_.move(v, points_[vertex_node_[v]]);
+        for (VertexIndex v : vertex_node_.keys())
+            mesh_.move(v.value(), points_[vertex_node_[v].value()]);
     }
 
     ReexpandedMesh take_result() {
@@ -135,8 +135,8 @@ private:
     ReexpansionObserver* observer_;
     SplitMesh mesh_;
     NodeVertices vertices_of_;
-    std::vector<std::uint32_t> vertex_node_;
-    std::vector<std::uint32_t> alias_;
+    IndexVector<VertexIndex, PointIndex> vertex_node_;
+    IndexVector<PointIndex, PointIndex> alias_;
     Star star_;
 };
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "hrsr/collapse.h"
+#include "index_types.h"
 #include "mesh/split_mesh.h"
 #include "mesh/triangle_mesh.h"
 #include "options.h"
@@ -13,11 +14,12 @@
 namespace hrsr {
 
 struct ReexpandedMesh {
-    std::vector<std::uint32_t> vertex_node; ///< per vertex: the node (point) it stands for
+    IndexVector<VertexIndex, PointIndex> vertex_node; ///< the node (point) it stands for
     std::vector<Triangle> triangles;
-    std::vector<std::uint32_t> alias; ///< per node: the node whose vertex represents it
-                                      ///< (itself if it has its own vertex; kNoNode if dropped)
-    static constexpr std::uint32_t kNoNode = 0xffffffffu;
+    /// Per node: the node whose vertex represents it (itself if it has its own vertex; kNoNode if
+    /// dropped).
+    IndexVector<PointIndex, PointIndex> alias;
+    static constexpr PointIndex kNoNode{0xffffffffu};
 };
 
 /// Watches re-expansion (tests check invariants after every split without debug flags).
@@ -34,9 +36,9 @@ public:
 
 /// The mesh RsR built on the coarse cloud, where the re-expansion starts.
 struct CoarseMesh {
-    std::vector<std::uint32_t> vertex_node; ///< per vertex: its node (copies of a non-manifold
-                                            ///< node share it)
-    std::vector<Vec3> positions;            ///< per vertex
+    /// Per vertex: its node (copies of a non-manifold node share it).
+    IndexVector<VertexIndex, PointIndex> vertex_node;
+    std::vector<Vec3> positions; ///< per vertex
     std::vector<Triangle> triangles;
 };
 

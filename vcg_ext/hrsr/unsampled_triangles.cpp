@@ -18,8 +18,8 @@ namespace {
 // is about 7.6 spacings for rank 46, and a vertex's shortest edge is about one spacing.
 constexpr double kScreen = 4.0;
 
-double length(const std::vector<Vec3>& points, std::uint32_t a, std::uint32_t b) {
-    return (points[a] - points[b]).Norm();
+double length(const std::vector<Vec3>& points, PointIndex a, PointIndex b) {
+    return (points[a.value()] - points[b.value()]).Norm();
 }
 
 /// The triangles around each vertex, and the triangles on an edge found through them.
@@ -133,15 +133,16 @@ std::vector<std::uint8_t> hole_covers(const std::vector<Triangle>& triangles, st
 
 std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
                                        const std::vector<Vec3>& points,
-                                       const std::vector<std::uint32_t>& vertex_point, int rank,
-                                       const Execution& exec) {
+                                       const IndexVector<VertexIndex, PointIndex>& vertex_point,
+                                       int rank, const Execution& exec) {
     const std::size_t vertices = vertex_point.size();
     std::vector<double> shortest(vertices, std::numeric_limits<double>::infinity());
     std::vector<double> longest(vertices, 0);
     for (const Triangle& t : triangles)
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t a = t[k], b = t[(k + 1) % 3];
-            const double l = length(points, vertex_point[a], vertex_point[b]);
+            const double l =
+                length(points, vertex_point[VertexIndex(a)], vertex_point[VertexIndex(b)]);
             for (std::uint32_t v : {a, b}) {
                 shortest[v] = std::min(shortest[v], l);
                 longest[v] = std::max(longest[v], l);
@@ -155,7 +156,7 @@ std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
     // reach[v]: constants::kOverlongFactor times the rank-th neighbour distance of v's point
     // (infinite where not queried); the same reach as D-31's.
     std::vector<PointIndex> queried_points;
-    for (std::uint32_t v : queried) queried_points.push_back(PointIndex(vertex_point[v]));
+    for (std::uint32_t v : queried) queried_points.push_back(vertex_point[VertexIndex(v)]);
     const std::vector<double> distance = input_reach(points, queried_points, rank, exec);
     std::vector<double> reach(vertices, std::numeric_limits<double>::infinity());
     for (std::size_t i = 0; i < queried.size(); ++i)
@@ -165,7 +166,8 @@ std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
     for (std::size_t t = 0; t < triangles.size(); ++t)
         for (int k = 0; k < 3 && !overlong[t]; ++k) {
             const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
-            const double l = length(points, vertex_point[a], vertex_point[b]);
+            const double l =
+                length(points, vertex_point[VertexIndex(a)], vertex_point[VertexIndex(b)]);
             if (l > reach[a] || l > reach[b]) overlong[t] = any = true;
         }
     if (!any) return 0;

@@ -2,6 +2,7 @@
 // coarse cloud, whose edges are √(1/p) times longer than the input's spacing).
 #pragma once
 
+#include "index_types.h"
 #include "mesh/triangle_mesh.h"
 #include "parallel.h"
 #include "point_set.h"
@@ -22,7 +23,7 @@ namespace hrsr {
 /// their order. Deterministic.
 std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
                                        const std::vector<Vec3>& points,
-                                       const std::vector<std::uint32_t>& vertex_point, int rank,
-                                       const Execution& exec);
+                                       const IndexVector<VertexIndex, PointIndex>& vertex_point,
+                                       int rank, const Execution& exec);
 
 } // namespace hrsr

@@ -19,10 +19,10 @@ const double kMinFanAngle = M_PI / 180.0;
 /// vertices stand for cloud points, and a copy of their positions would add to the peak.
 struct VertexPositions {
     const std::vector<Vec3>& points;
-    const std::vector<std::uint32_t>& vertex_point;
+    const IndexVector<VertexIndex, PointIndex>& vertex_point;
     std::size_t vertex_count;
     std::uint32_t point(std::uint32_t v) const {
-        return vertex_point.empty() ? v : vertex_point[v];
+        return vertex_point.empty() ? v : vertex_point[VertexIndex(v)].value();
     }
     const Vec3& operator[](std::uint32_t v) const { return points[point(v)]; }
     /// The triangle over point ids, for the intersection test (which compares corner ids).
@@ -236,7 +236,7 @@ void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangle
 } // namespace
 
 std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
-                             const std::vector<std::uint32_t>& vertex_point,
+                             const IndexVector<VertexIndex, PointIndex>& vertex_point,
                              std::size_t max_edges) {
     const VertexPositions positions{points, vertex_point,
                                     vertex_point.empty() ? points.size() : vertex_point.size()};

@@ -1,6 +1,7 @@
 // D-28: closing the tiniest holes of an output mesh, whatever phase left them.
 #pragma once
 
+#include "index_types.h"
 #include "mesh/triangle_mesh.h"
 #include "point_set.h"
 
@@ -23,7 +24,7 @@ inline constexpr std::size_t kMaxFilledLoop = 5;
 /// loops closed. Deterministic (loops in order of their smallest
 /// vertex).
 std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
-                             const std::vector<std::uint32_t>& vertex_point = {},
+                             const IndexVector<VertexIndex, PointIndex>& vertex_point = {},
                              std::size_t max_edges = kMaxFilledLoop);
 
 } // namespace hrsr
