@@ -211,7 +211,7 @@ private:
         std::size_t count = 0;
         for (std::size_t i = 0; i < near_.size(); ++i)
             if (box.overlaps(near_box_[i]) &&
-                geometry_.intersect_exactly(t, geometry_.triangle(near_[i])))
+                geometry_.intersect_unboxed(t, geometry_.triangle(near_[i])))
                 ++count;
         return count;
     }
@@ -301,7 +301,7 @@ private:
             if (geometry_.degenerate(t)) continue;
             near(geometry_.box(t), f, kNoFace); // every face there overlaps t's box
             for (std::uint32_t o : near_)
-                if (geometry_.intersect_exactly(t, geometry_.triangle(o)))
+                if (geometry_.intersect_unboxed(t, geometry_.triangle(o)))
                     next.emplace_back(std::min(f, o), std::max(f, o));
         }
         std::sort(next.begin(), next.end());
