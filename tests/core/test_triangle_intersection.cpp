@@ -39,6 +39,17 @@ TEST(ExactPredicates, SignsFollowTheRightHand) {
     EXPECT_FALSE(exact::collinear(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1e-300, 0)));
 }
 
+TEST(ExactPredicates, ExtremeExponentsAreExact) {
+    // The filter cannot decide these (no permanent, or one that may have underflowed).
+    const Vec3 o(0, 0, 0), far(1e300, 0, 0), near(0, 1e-300, 0);
+    EXPECT_EQ(exact::orient3d(o, far, near, Vec3(3e299, 5e-301, 0)), 0);
+    EXPECT_EQ(exact::orient3d(o, far, near, Vec3(3e299, 5e-301, 1e-320)), 1); // subnormal
+    EXPECT_EQ(exact::orient3d(o, far, near, Vec3(-3e299, 5e-301, -1e-320)), -1);
+    EXPECT_EQ(exact::orient2d(o, far, Vec3(-1e-320, 4e-320, 0), 0, 1), 1);
+    EXPECT_EQ(
+        exact::orient2d(Vec3(1, 1, 0), Vec3(1 + 0x1p-52, 1, 0), Vec3(1, 1 - 0x1p-52, 0), 0, 1), -1);
+}
+
 TEST(ExactPredicates, CoplanarFloatsAreCoplanarWhereDoublesSayNot) {
     const std::array<Vec3, 4> p = testing::coplanar_float_points();
     const double in_doubles = ((p[1] - p[0]) ^ (p[2] - p[0])).dot(p[3] - p[0]);

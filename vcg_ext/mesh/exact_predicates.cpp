@@ -2,7 +2,10 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace hrsr::exact {
 
@@ -19,34 +22,51 @@ constexpr double kSmallestTrustedPermanent = 1e-250;
 int sign(double x) {
     return (x > 0) - (x < 0);
 }
-int sign(const mpq_class& x) {
-    return sgn(x);
-}
 
 // Whether the filter may decide: |det| beyond the bound (false for NaN or infinity too).
 bool decided(double det, double permanent, double bound) {
     return permanent >= kSmallestTrustedPermanent && std::abs(det) > bound * permanent;
 }
 
-// mpq_class(double) converts exactly; the differences below are then exact as well.
-int orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-    mpq_class m[3][3];
-    for (int k = 0; k < 3; ++k) {
-        m[0][k] = mpq_class(b[k]) - mpq_class(a[k]);
-        m[1][k] = mpq_class(c[k]) - mpq_class(a[k]);
-        m[2][k] = mpq_class(d[k]) - mpq_class(a[k]);
+// The coordinates as integers over one common power of two, exactly (doubles are dyadic):
+// integer arithmetic then needs no fractions to reduce. Each value is its 53-bit mantissa,
+// shifted by its exponent's distance above the lowest.
+template <std::size_t N>
+std::array<mpz_class, N> on_common_scale(const std::array<double, N>& values) {
+    constexpr int kMantissaBits = 53;
+    int lowest = std::numeric_limits<int>::max();
+    for (double x : values)
+        if (x != 0) {
+            int e = 0;
+            std::frexp(x, &e);
+            lowest = std::min(lowest, e);
+        }
+    std::array<mpz_class, N> scaled;
+    for (std::size_t k = 0; k < N; ++k) {
+        if (values[k] == 0) continue;
+        int e = 0;
+        scaled[k] = std::ldexp(std::frexp(values[k], &e), kMantissaBits); // an integer
+        mpz_mul_2exp(scaled[k].get_mpz_t(), scaled[k].get_mpz_t(), mp_bitcnt_t(e - lowest));
     }
-    const mpq_class det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+    return scaled;
+}
+
+int orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    const std::array<mpz_class, 12> v = on_common_scale<12>(
+        {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]});
+    mpz_class m[3][3];
+    for (int r = 0; r < 3; ++r)
+        for (int k = 0; k < 3; ++k) m[r][k] = v[std::size_t(3 * (r + 1) + k)] - v[std::size_t(k)];
+    const mpz_class det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
                           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    return sign(det);
+    return sgn(det);
 }
 
 int orient2d_exact(const Vec3& a, const Vec3& b, const Vec3& c, int i, int j) {
-    const mpq_class ax(a[i]), ay(a[j]);
-    const mpq_class det = (mpq_class(b[i]) - ax) * (mpq_class(c[j]) - ay) -
-                          (mpq_class(b[j]) - ay) * (mpq_class(c[i]) - ax);
-    return sign(det);
+    const std::array<mpz_class, 6> v = on_common_scale<6>({a[i], a[j], b[i], b[j], c[i], c[j]});
+    const mpz_class det = (v[2] - v[0]) * (v[5] - v[1]) - (v[3] - v[1]) * (v[4] - v[0]);
+    return sgn(det);
 }
 
 } // namespace

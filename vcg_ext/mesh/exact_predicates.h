@@ -8,7 +8,7 @@ namespace hrsr::exact {
 /// The sign (1, 0 or -1) of ((b - a) × (c - a)) · (d - a): 1 when d lies on the side that the
 /// normal of abc (right hand) points to, 0 when the four points are coplanar. Exact for finite
 /// coordinates: a floating-point evaluation decides when Shewchuk's error bound allows it,
-/// rational arithmetic (GMP) otherwise.
+/// exact integer arithmetic (GMP) otherwise.
 int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 /// The sign of the same in the coordinate plane of axes (i, j): 1 when a, b, c turn
