@@ -205,8 +205,10 @@ private:
         return near_;
     }
 
-    // Intersections of `t` with the faces of the last near() search.
+    // Intersections of `t` with the faces of the last near() search (none for a degenerate t,
+    // which the pair test does not take, as `hrsr check` skips it).
     std::size_t intersections_near(const Triangle& t) const {
+        if (geometry_.degenerate(t)) return 0;
         const Box box = geometry_.box(t);
         std::size_t count = 0;
         for (std::size_t i = 0; i < near_.size(); ++i)
