@@ -20,7 +20,8 @@ namespace hrsr {
 /// vertex, so two fans joined through copies of one point, as HRsR writes non-manifold points,
 /// are a pair for CGAL and not here; intersecting_pairs_by_index() is CGAL's view). Degenerate
 /// triangles (corners exactly on one line, a repeated vertex included; CGAL reports them as a
-/// pair with themselves) and pairs on the same three vertices (duplicate faces) are not tested:
+/// pair with themselves) and pairs on the same three vertices (duplicate faces; CGAL counts one
+/// wound the other way, the only kind its Surface_mesh holds) are not tested:
 /// check_mesh() counts both, its degenerate count with a tolerance, so it includes every
 /// triangle left out here. Candidate pairs come from a uniform grid over the triangles'
 /// bounding boxes (triangle_grid.h), each pair tested once, cells in parallel. `triangles` must
