@@ -20,8 +20,8 @@ fi
 PACKAGES=(
   build-essential cmake ninja-build dpkg-dev pkg-config git time python3
   libeigen3-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
-  # PCD binary_compressed blocks (LZF)
-  liblzf-dev
+  # PCD binary_compressed blocks (LZF); exact predicates (GMP); the CGAL agreement test and bench
+  liblzf-dev libgmp-dev libcgal-dev
   clang-format clang-tidy
   # sanitizer and fuzz stage (scripts/test_sanitizers.sh): libFuzzer and OpenMP for clang
   clang-14 libclang-rt-14-dev libomp-14-dev

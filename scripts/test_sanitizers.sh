@@ -23,6 +23,7 @@ OPT=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1
 SLOW='clang_format|clang_tidy|meshlab_server|RealScans|Analytic/HrsrSurface|Analytic/RsrSurface'
 SLOW+='|Hrsr.VertexCountFallsAsLMinGrows|SameMeshForOneAndTwoThreads|SameResultForOneAndTwoThreads'
 SLOW+='|SameBytesForRepeatedRuns|CancellationPointsAreNeverFarApart'
+SLOW+='|CgalAgreement.ScanReconstructions'
 start=$(date +%s)
 
 # 1. ASan + UBSan

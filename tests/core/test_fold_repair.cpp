@@ -1,58 +1,16 @@
-// D-26: the flips that undo folds, and the triangle test they share with `hrsr check`.
+// D-26: the flips that undo folds.
 #include "io/point_set_reader.h"
 #include "mesh/fold_repair.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/self_intersections.h"
-#include "mesh/triangle_intersection.h"
-#include "mesh/vcg_mesh.h"
 #include "reconstruction.h"
 
 #include <gtest/gtest.h>
 
-#include <vcg/complex/algorithms/clean.h>
-
-#include <random>
 #include <tuple>
 
 namespace hrsr {
 namespace {
-
-// Random triangle pairs sharing 0, 1 or 2 corners, on a coarse lattice (so that touching,
-// coplanar and collinear cases come up) and in general position.
-TEST(TriangleIntersection, AgreesWithVcglibsFaceFaceTest) {
-    std::mt19937 random(7);
-    std::size_t intersecting[3] = {0, 0, 0}, tested[3] = {0, 0, 0};
-    for (int trial = 0; trial < 20000; ++trial) {
-        const bool lattice = trial % 2 == 0;
-        std::uniform_int_distribution<int> cell(0, 2);
-        std::uniform_real_distribution<double> unit(0.0, 1.0);
-        std::vector<Vec3> positions(6);
-        for (Vec3& p : positions)
-            p = lattice ? Vec3(cell(random), cell(random), cell(random))
-                        : Vec3(unit(random), unit(random), unit(random));
-        const int shared = trial % 3;
-        Triangle a{0, 1, 2}, b{3, 4, 5};
-        for (int k = 0; k < shared; ++k) b[std::size_t(k)] = a[std::size_t(2 - k)];
-        std::shuffle(b.begin(), b.end(), random);
-        VcgMesh m;
-        build_vcg_mesh(positions, {}, {a, b}, m);
-        const auto corners = [&](const Triangle& t) {
-            return Corners{positions[t[0]], positions[t[1]], positions[t[2]]};
-        };
-        const bool ours = mesh_triangles_intersect(corners(a), a, corners(b), b);
-        const bool theirs =
-            vcg::tri::Clean<VcgMesh>::TestFaceFaceIntersection(&m.face[0], &m.face[1]);
-        ASSERT_EQ(ours, theirs) << "trial " << trial << ", " << shared << " shared corners";
-        ++tested[shared];
-        intersecting[shared] += ours;
-    }
-    // The cases are not all trivial: both outcomes occur with 0 and 1 shared corners.
-    for (int shared = 0; shared < 2; ++shared) {
-        EXPECT_GT(intersecting[shared], tested[shared] / 20) << shared;
-        EXPECT_LT(intersecting[shared], tested[shared]) << shared;
-    }
-    EXPECT_EQ(intersecting[2], 0u); // a shared edge never counts
-}
 
 struct Output {
     std::vector<Vec3> positions; ///< the output vertices at their input coordinates

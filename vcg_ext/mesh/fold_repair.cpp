@@ -226,13 +226,15 @@ private:
         return near_;
     }
 
-    // Intersections of `t` with the faces of the last near() search.
+    // Intersections of `t` with the faces of the last near() search (none for a degenerate t,
+    // which the pair test does not take, as `hrsr check` skips it).
     std::size_t intersections_near(const Triangle& t) const {
+        if (geometry_.degenerate(t)) return 0;
         const Box box = geometry_.box(t);
         std::size_t count = 0;
         for (std::size_t i = 0; i < near_.size(); ++i)
             if (box.overlaps(near_box_[i]) &&
-                geometry_.intersect_exactly(t, geometry_.triangle(near_[i])))
+                geometry_.intersect_unboxed(t, geometry_.triangle(near_[i])))
                 ++count;
         return count;
     }
@@ -322,7 +324,7 @@ private:
             if (geometry_.degenerate(t)) continue;
             near(geometry_.box(t), f, kNoFace); // every face there overlaps t's box
             for (std::uint32_t o : near_)
-                if (geometry_.intersect_exactly(t, geometry_.triangle(o)))
+                if (geometry_.intersect_unboxed(t, geometry_.triangle(o)))
                     next.emplace_back(std::min(f, o), std::max(f, o));
         }
         std::sort(next.begin(), next.end());

@@ -12,18 +12,28 @@
 
 namespace hrsr {
 
-/// The pairs (i, j), i < j, of triangles that intersect, sorted. Vertices at the same position
-/// count as one vertex. The pair test is vcglib's Clean::TestFaceFaceIntersection (on bare
-/// triangles: triangle_intersection.h): triangles
-/// sharing no vertex intersect if they touch anywhere; triangles sharing one vertex if either
-/// one's opposite edge, pulled half-way towards the shared vertex, crosses the other one;
-/// triangles sharing an edge never count (a fold along a shared edge is not found). Degenerate
-/// triangles (a repeated vertex, or zero area) and pairs on the same three vertices (duplicate
-/// faces) are not tested: they are reported as such by check_mesh(). Candidate pairs come from
-/// a uniform grid over the triangles' bounding boxes (triangle_grid.h), each pair tested once,
-/// cells in parallel. `triangles` must index `positions`.
+/// The pairs (i, j), i < j, of triangles that intersect, sorted, on the coordinates as given
+/// (exactly: triangle_intersection.h). The pair test is that of CGAL's
+/// Polygon_mesh_processing::self_intersections: triangles sharing no vertex intersect if they
+/// touch anywhere; sharing one vertex, if they meet anywhere else; sharing an edge, if they are
+/// coplanar and overlap. Vertices at the same position count as one vertex here (CGAL goes by
+/// vertex, so two fans joined through copies of one point, as HRsR writes non-manifold points,
+/// are a pair for CGAL and not here; intersecting_pairs_by_index() is CGAL's view). Degenerate
+/// triangles (corners exactly on one line, a repeated vertex included; CGAL reports them as a
+/// pair with themselves) and pairs on the same three vertices (duplicate faces; CGAL counts one
+/// wound the other way, the only kind its Surface_mesh holds) are not tested:
+/// check_mesh() counts both, its degenerate count with a tolerance, so it includes every
+/// triangle left out here. Candidate pairs come from a uniform grid over the triangles'
+/// bounding boxes (triangle_grid.h), each pair tested once, cells in parallel. `triangles` must
+/// index `positions`, whose coordinates must be finite.
 std::vector<TrianglePair> self_intersecting_pairs(const std::vector<Vec3>& positions,
                                                   const std::vector<Triangle>& triangles,
                                                   const Execution& exec);
+
+/// The same with vertices shared by index only, as CGAL sees a mesh: two triangles touching at
+/// distinct vertices that have the same position intersect.
+std::vector<TrianglePair> intersecting_pairs_by_index(const std::vector<Vec3>& positions,
+                                                      const std::vector<Triangle>& triangles,
+                                                      const Execution& exec);
 
 } // namespace hrsr

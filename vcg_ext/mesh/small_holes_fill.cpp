@@ -192,8 +192,11 @@ void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangle
                  const VertexPositions& positions) {
     if (fills.empty()) return;
     const TriangleGeometry geometry(positions.points, {});
+    // The pair test takes proper triangles: an exactly degenerate one of the mesh is skipped, as
+    // `hrsr check` skips it (fans have no angle under 1°).
     auto intersect = [&](const Triangle& a, const Triangle& b) {
-        return geometry.intersect(positions.as_points(a), positions.as_points(b));
+        const Triangle pa = positions.as_points(a), pb = positions.as_points(b);
+        return !geometry.degenerate(pa) && !geometry.degenerate(pb) && geometry.intersect(pa, pb);
     };
     const FillGrid grid(fills, positions);
     for (Fill& f : fills) {

@@ -40,8 +40,8 @@ inline Vec3 unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 /// Triangles over fixed positions, with the tests the grid and the fold repair need. Corner ids
-/// decide which corners two triangles share (weld copies at one position first, as
-/// self_intersections.h does).
+/// decide which corners two triangles share (weld copies at one position first for
+/// self_intersecting_pairs(), or not for intersecting_pairs_by_index()).
 class TriangleGeometry {
 public:
     TriangleGeometry(const std::vector<Vec3>& positions, std::vector<Triangle> triangles)
@@ -61,15 +61,17 @@ public:
     Vec3 normal(const Triangle& t) const {
         return unit_normal(positions_[t[0]], positions_[t[1]], positions_[t[2]]);
     }
-    /// Not tested, as in self_intersections.h: a repeated corner or no area.
+    /// Not tested, as in self_intersections.h: corners exactly on one line (a repeated corner
+    /// included).
     bool degenerate(const Triangle& t) const {
-        return t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || normal(t) == Vec3(0, 0, 0);
+        return t[0] == t[1] || t[1] == t[2] || t[2] == t[0] ||
+               collinear_corners(positions_[t[0]], positions_[t[1]], positions_[t[2]]);
     }
     bool intersect(const Triangle& a, const Triangle& b) const {
-        return box(a).overlaps(box(b)) && intersect_exactly(a, b);
+        return box(a).overlaps(box(b)) && intersect_unboxed(a, b);
     }
     /// The same without the box test (the caller has done it).
-    bool intersect_exactly(const Triangle& a, const Triangle& b) const {
+    bool intersect_unboxed(const Triangle& a, const Triangle& b) const {
         return mesh_triangles_intersect(corners(a), a, corners(b), b);
     }
 

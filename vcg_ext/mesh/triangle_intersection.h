@@ -10,13 +10,18 @@ namespace hrsr {
 
 using Corners = std::array<Vec3, 3>;
 
-/// vcglib's Clean::TestFaceFaceIntersection on bare triangles (the rule self_intersections.h
-/// describes), for code that changes a mesh and re-tests a few triangles at a time: triangles
-/// sharing no vertex intersect if they touch anywhere; sharing one vertex, if either one's
-/// opposite edge, pulled half-way towards the shared vertex, crosses the other; sharing two or
-/// three, never (a fold along a shared edge, or a duplicate, is not an intersection here).
-/// Which corners are shared is decided by the ids `ia`, `ib`.
+/// Whether two non-degenerate triangles of a mesh meet other than where the mesh joins them,
+/// as CGAL's Polygon_mesh_processing::self_intersections decides (the rule self_intersections.h
+/// describes): sharing no vertex, if they touch at all; sharing one vertex, if they meet
+/// anywhere else; sharing an edge, if they are coplanar and overlap (their opposite corners on
+/// the same side of the edge); sharing all three vertices (a duplicate), never. Which corners
+/// are shared is decided by the ids `ia`, `ib`. Exact on the coordinates as given (finite
+/// doubles): every decision is the sign of an orientation determinant (exact_predicates.h).
 bool mesh_triangles_intersect(const Corners& a, const Triangle& ia, const Corners& b,
                               const Triangle& ib);
+
+/// Whether triangle abc is degenerate for the intersection test: its corners are exactly on one
+/// line (a repeated or coinciding corner included). Such triangles are not tested.
+bool collinear_corners(const Vec3& a, const Vec3& b, const Vec3& c);
 
 } // namespace hrsr

@@ -1,0 +1,147 @@
+// The exact pair test of self_intersections.h: orientation predicates, each case of CGAL's rule,
+// configurations where a double evaluation is wrong, and folded meshes.
+#include "mesh/exact_predicates.h"
+#include "mesh/self_intersections.h"
+#include "mesh/triangle_intersection.h"
+
+#include "fold_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace hrsr {
+namespace {
+
+using testing::TestMesh;
+
+bool intersect(const Corners& a, const Triangle& ia, const Corners& b, const Triangle& ib) {
+    const bool result = mesh_triangles_intersect(a, ia, b, ib);
+    EXPECT_EQ(mesh_triangles_intersect(b, ib, a, ia), result) << "not symmetric";
+    return result;
+}
+
+// Triangles with no shared vertex: ids 0-2 and 3-5.
+bool apart_intersect(const Corners& a, const Corners& b) {
+    return intersect(a, {0, 1, 2}, b, {3, 4, 5});
+}
+
+const Corners kUnit{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+
+TEST(ExactPredicates, SignsFollowTheRightHand) {
+    EXPECT_EQ(exact::orient3d(kUnit[0], kUnit[1], kUnit[2], Vec3(0.2, 0.2, 1)), 1);
+    EXPECT_EQ(exact::orient3d(kUnit[0], kUnit[1], kUnit[2], Vec3(0.2, 0.2, -1)), -1);
+    EXPECT_EQ(exact::orient3d(kUnit[0], kUnit[1], kUnit[2], Vec3(5, -7, 0)), 0);
+    EXPECT_EQ(exact::orient2d(kUnit[0], kUnit[1], kUnit[2], 0, 1), 1);
+    EXPECT_EQ(exact::orient2d(kUnit[0], kUnit[1], kUnit[2], 1, 0), -1);
+    EXPECT_TRUE(exact::collinear(Vec3(1, 2, 3), Vec3(2, 4, 6), Vec3(-1, -2, -3)));
+    EXPECT_TRUE(exact::collinear(Vec3(1, 2, 3), Vec3(1, 2, 3), Vec3(7, 0, 1)));
+    EXPECT_FALSE(exact::collinear(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1e-300, 0)));
+}
+
+TEST(ExactPredicates, ExtremeExponentsAreExact) {
+    // The filter cannot decide these (no permanent, or one that may have underflowed).
+    const Vec3 o(0, 0, 0), far(1e300, 0, 0), near(0, 1e-300, 0);
+    EXPECT_EQ(exact::orient3d(o, far, near, Vec3(3e299, 5e-301, 0)), 0);
+    EXPECT_EQ(exact::orient3d(o, far, near, Vec3(3e299, 5e-301, 1e-320)), 1); // subnormal
+    EXPECT_EQ(exact::orient3d(o, far, near, Vec3(-3e299, 5e-301, -1e-320)), -1);
+    EXPECT_EQ(exact::orient2d(o, far, Vec3(-1e-320, 4e-320, 0), 0, 1), 1);
+    EXPECT_EQ(
+        exact::orient2d(Vec3(1, 1, 0), Vec3(1 + 0x1p-52, 1, 0), Vec3(1, 1 - 0x1p-52, 0), 0, 1), -1);
+}
+
+TEST(ExactPredicates, CoplanarFloatsAreCoplanarWhereDoublesSayNot) {
+    const std::array<Vec3, 4> p = testing::coplanar_float_points();
+    const double in_doubles = ((p[1] - p[0]) ^ (p[2] - p[0])).dot(p[3] - p[0]);
+    EXPECT_NE(in_doubles, 0.0); // rounding: the fixture's point
+    EXPECT_EQ(exact::orient3d(p[0], p[1], p[2], p[3]), 0);
+    EXPECT_EQ(exact::orient3d(p[3], p[0], p[1], p[2]), 0);
+    // One float step off the plane, either way.
+    const Vec3 up(p[3][0], p[3][1], double(std::nextafter(float(p[3][2]), 1e9f)));
+    const Vec3 down(p[3][0], p[3][1], double(std::nextafter(float(p[3][2]), -1e9f)));
+    EXPECT_EQ(exact::orient3d(p[0], p[1], p[2], up), -exact::orient3d(p[0], p[1], p[2], down));
+    EXPECT_NE(exact::orient3d(p[0], p[1], p[2], up), 0);
+}
+
+TEST(TriangleIntersection, ApartTrianglesThatTouchAtAPointIntersect) {
+    const Corners touching{Vec3(0.25, 0.25, 0), Vec3(0, 0, 1), Vec3(1, 1, 1)};
+    EXPECT_TRUE(apart_intersect(kUnit, touching));
+    Corners lifted = touching;
+    lifted[0][2] = 1e-300;
+    EXPECT_FALSE(apart_intersect(kUnit, lifted));
+    const Corners at_corner{Vec3(1, 0, 0), Vec3(2, 0, 1), Vec3(2, 1, 1)}; // a copy of a corner
+    EXPECT_TRUE(apart_intersect(kUnit, at_corner));
+}
+
+TEST(TriangleIntersection, ApartTrianglesAlongAnEdgeIntersect) {
+    EXPECT_TRUE(apart_intersect(kUnit, {Vec3(0.2, 0, 0), Vec3(0.6, 0, 0), Vec3(0.4, 0, 1)}));
+    EXPECT_TRUE(apart_intersect(kUnit, {Vec3(0.2, 0, 0), Vec3(0.6, 0, 0), Vec3(0.4, -1, 0)}));
+    EXPECT_FALSE(apart_intersect(kUnit, {Vec3(1.2, 0, 0), Vec3(1.6, 0, 0), Vec3(1.4, 0, 1)}));
+}
+
+TEST(TriangleIntersection, CoplanarApartTrianglesIntersectWhenTheyOverlap) {
+    EXPECT_TRUE(apart_intersect(kUnit, {Vec3(0.1, 0.1, 0), Vec3(0.2, 0.1, 0), Vec3(0.1, 0.2, 0)}));
+    EXPECT_TRUE(apart_intersect(kUnit, {Vec3(-1, 0.2, 0), Vec3(2, 0.2, 0), Vec3(0.5, 5, 0)}));
+    EXPECT_FALSE(apart_intersect(kUnit, {Vec3(1, 1, 0), Vec3(2, 1, 0), Vec3(1, 2, 0)}));
+}
+
+TEST(TriangleIntersection, ASharedVertexAloneIsNoIntersection) {
+    const Triangle ia{0, 1, 2}, ib{0, 3, 4};
+    // Fan neighbours, a sharp dihedral, and a triangle touching only at the vertex.
+    EXPECT_FALSE(intersect(kUnit, ia, {kUnit[0], Vec3(0, 1, 0.1), Vec3(-1, 0, 0)}, ib));
+    EXPECT_FALSE(intersect(kUnit, ia, {kUnit[0], Vec3(0.5, 0.5, 0.01), Vec3(0, 0.5, 1)}, ib));
+    EXPECT_FALSE(intersect(kUnit, ia, {kUnit[0], Vec3(-1, -1, 0), Vec3(-1, -2, 3)}, ib));
+}
+
+TEST(TriangleIntersection, ASharedVertexAndAnyOtherContactIsAnIntersection) {
+    const Triangle ia{0, 1, 2}, ib{0, 3, 4};
+    // b's far edge crosses a; b inside a's wedge in a's plane; b's far corner on a's edge.
+    EXPECT_TRUE(intersect(kUnit, ia, {kUnit[0], Vec3(0.3, 0.3, -1), Vec3(0.3, 0.3, 1)}, ib));
+    EXPECT_TRUE(intersect(kUnit, ia, {kUnit[0], Vec3(0.2, 0.1, 0), Vec3(0.1, 0.2, 0)}, ib));
+    EXPECT_TRUE(intersect(kUnit, ia, {kUnit[0], Vec3(0.5, 0.5, 0), Vec3(1, 1, 1)}, ib));
+}
+
+TEST(TriangleIntersection, ASharedEdgeIntersectsWhenFoldedFlat) {
+    const Triangle ia{0, 1, 2}, ib{1, 0, 3};
+    EXPECT_FALSE(intersect(kUnit, ia, {kUnit[1], kUnit[0], Vec3(0.5, -1, 0)}, ib));   // flat
+    EXPECT_FALSE(intersect(kUnit, ia, {kUnit[1], kUnit[0], Vec3(0.5, 1, 0.01)}, ib)); // sharp
+    EXPECT_TRUE(intersect(kUnit, ia, {kUnit[1], kUnit[0], Vec3(0.5, 1, 0)}, ib));     // folded
+    EXPECT_TRUE(intersect(kUnit, ia, {kUnit[1], kUnit[0], Vec3(0.1, 0.1, 0)}, ib));   // inside
+}
+
+TEST(TriangleIntersection, ADuplicateIsNoIntersection) {
+    EXPECT_FALSE(intersect(kUnit, {0, 1, 2}, kUnit, {2, 1, 0}));
+}
+
+TEST(TriangleIntersection, FloatCoordinatesAreDecidedExactly) {
+    const TestMesh fold = testing::flat_fold_on_floats();
+    EXPECT_EQ(self_intersecting_pairs(fold.positions, fold.triangles, {}),
+              std::vector<TrianglePair>{TrianglePair(0, 1)});
+    TestMesh touch = testing::touching_on_floats();
+    EXPECT_EQ(self_intersecting_pairs(touch.positions, touch.triangles, {}).size(), 1u);
+    // One float step up: on the side of the other corners, no contact.
+    touch.positions[3][2] = double(std::nextafter(float(touch.positions[3][2]), 1e9f));
+    EXPECT_TRUE(self_intersecting_pairs(touch.positions, touch.triangles, {}).empty());
+}
+
+TEST(TriangleIntersection, FoldedFixturesHaveTheirPairs) {
+    for (const TestMesh& m :
+         {testing::pushed_vertex(), testing::crossing_sheets(), testing::boundary_fold()}) {
+        const std::vector<TrianglePair> pairs =
+            self_intersecting_pairs(m.positions, m.triangles, {});
+        EXPECT_GE(pairs.size(), 2u);
+        EXPECT_EQ(self_intersecting_pairs(m.positions, m.triangles, {1, nullptr}), pairs);
+    }
+}
+
+TEST(TriangleIntersection, CopiesAtOnePositionAreOneVertexUnlessByIndex) {
+    TestMesh m; // two fans sharing one point through two vertex copies
+    m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0),    Vec3(0, 1, 0),
+                   Vec3(0, 0, 0), Vec3(-1, 0, 0.5), Vec3(0, -1, 0.5)};
+    m.triangles = {{0, 1, 2}, {3, 4, 5}};
+    EXPECT_TRUE(self_intersecting_pairs(m.positions, m.triangles, {}).empty());
+    EXPECT_EQ(intersecting_pairs_by_index(m.positions, m.triangles, {}).size(), 1u);
+}
+
+} // namespace
+} // namespace hrsr

@@ -1,0 +1,21 @@
+// Exact orientation signs on double coordinates, for the self-intersection test.
+#pragma once
+
+#include "point_set.h"
+
+namespace hrsr::exact {
+
+/// The sign (1, 0 or -1) of ((b - a) × (c - a)) · (d - a): 1 when d lies on the side that the
+/// normal of abc (right hand) points to, 0 when the four points are coplanar. Exact for finite
+/// coordinates: a floating-point evaluation decides when Shewchuk's error bound allows it,
+/// exact integer arithmetic (GMP) otherwise.
+int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+/// The sign of the same in the coordinate plane of axes (i, j): 1 when a, b, c turn
+/// counter-clockwise with axis i to the right and axis j up, 0 when they are collinear there.
+int orient2d(const Vec3& a, const Vec3& b, const Vec3& c, int i, int j);
+
+/// Whether a, b, c lie on one line (two or three of them coinciding included), exactly.
+bool collinear(const Vec3& a, const Vec3& b, const Vec3& c);
+
+} // namespace hrsr::exact
