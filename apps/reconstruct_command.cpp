@@ -84,6 +84,19 @@ CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& a) {
 
 namespace {
 
+// D-26's flips, then D-32's removal.
+nlohmann::json fold_repair_json(const ReconstructionReport& r) {
+    return {{"intersecting_pairs_found", r.fold_repair.pairs_before},
+            {"flips", r.fold_repair.flips},
+            {"intersecting_pairs_after_flips", r.fold_repair.pairs_after},
+            {"vertices_removed", r.fold_removal.vertices_removed},
+            {"vertices_put_back", r.fold_removal.vertices_reinserted},
+            {"holes_filled_again", r.fold_removal.holes_refilled},
+            {"faces_cut", r.fold_removal.faces_cut},
+            {"vertex_copies", r.fold_removal.vertex_copies},
+            {"intersecting_pairs_left", r.fold_removal.pairs_after}};
+}
+
 nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionReport& r) {
     const MeshStats& m = r.mesh;
     nlohmann::json timings = nlohmann::json::array();
@@ -124,10 +137,12 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
                 {"no_normal", r.preprocess.count(PointFate::NoNormal)},
                 {"small_component", r.preprocess.count(PointFate::SmallComponent) +
                                         r.dropped_small_coarse_component.size()},
-                {"not_in_any_triangle", r.not_in_triangle.size()}}},
+                {"not_in_any_triangle", r.not_in_triangle.size()},
+                {"fold", r.dropped_fold.size()}}},
               {"merged_duplicates", r.preprocess.count(PointFate::Duplicate)},
               {"merged_into_other_vertices", r.merged_points},
               {"not_in_any_triangle_indices", r.not_in_triangle},
+              {"fold_indices", r.dropped_fold},
               {"referenced", r.referenced_input_points},
               {"vertex_reference_ratio", r.vertex_reference_ratio}}},
             {"mesh",
@@ -153,10 +168,7 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"handle_hop_limits", r.handle_hop_limits},
               {"small_holes_filled", r.small_holes_filled},
               {"ear_edges", r.ear_edges}}},
-            {"fold_repair",
-             {{"intersecting_pairs_found", r.fold_repair.pairs_before},
-              {"flips", r.fold_repair.flips},
-              {"intersecting_pairs_left", r.fold_repair.pairs_after}}},
+            {"fold_repair", fold_repair_json(r)},
             {"hrsr",
              {{"coarse_points", r.coarse_points},
               {"records", e.records},
@@ -182,10 +194,12 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
                 a.method.c_str(), r.preprocess.input_points, m.vertices, m.faces, a.output.c_str());
     std::printf(
         "  r_v %.4f %% of input points are vertices; dropped: %zu non-finite, %zu in small "
-        "components, %zu not in any triangle; merged: %zu duplicates, %zu into other vertices\n",
+        "components, %zu not in any triangle, %zu in folds; merged: %zu duplicates, %zu into "
+        "other vertices\n",
         100.0 * r.vertex_reference_ratio, r.preprocess.count(PointFate::NonFinite),
         r.preprocess.count(PointFate::SmallComponent) + r.dropped_small_coarse_component.size(),
-        r.not_in_triangle.size(), r.preprocess.count(PointFate::Duplicate), r.merged_points);
+        r.not_in_triangle.size(), r.dropped_fold.size(), r.preprocess.count(PointFate::Duplicate),
+        r.merged_points);
     if (a.options.method == Method::Hrsr) {
         const ReexpansionStats& e = r.reexpansion;
         std::printf("  HRsR: RsR on %zu points; %zu of %zu splits replayed (%zu failed, %zu merged "
@@ -210,9 +224,14 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
                     "more than %s graph hops apart on the cloud RsR saw\n",
                     a.options.rsr.min_handle_loop, hops.c_str());
     }
-    if (a.options.rsr.fold_repair_rounds > 0)
-        std::printf("  folds: %zu intersecting triangle pairs, %zu edge flips, %zu pairs left\n",
-                    r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after);
+    if (a.options.rsr.fold_repair_rounds > 0) {
+        const FoldRemovalStats& f = r.fold_removal;
+        std::printf("  folds: %zu intersecting triangle pairs, %zu edge flips, %zu pairs left; "
+                    "%zu vertices taken out (%zu holes filled again), %zu faces cut, %zu pairs "
+                    "left\n",
+                    r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after,
+                    f.vertices_removed, f.holes_refilled, f.faces_cut, f.pairs_after);
+    }
     double total = 0;
     for (const auto& t : r.timings) total += t.second;
     std::printf("  %.2f s, peak memory %.0f MB\n", total, double(peak_memory_bytes()) / 1e6);

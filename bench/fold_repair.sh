@@ -35,7 +35,7 @@ import json, sys
 r = json.load(open(sys.argv[1])); c = json.load(open(sys.argv[2])); f = r["fold_repair"]
 w = sys.argv[6].split(":"); secs = float(w[-1]) + 60 * float(w[-2]) + (3600 * float(w[-3]) if len(w) > 2 else 0)
 print(f"{sys.argv[3]:<38} {sys.argv[4]:<6} {sys.argv[5]:<7} {secs:8.1f} {int(sys.argv[7]):8d} "
-      f"{f['intersecting_pairs_found']:7d} {f['intersecting_pairs_left']:7d} {f['flips']:7d} "
+      f"{f['intersecting_pairs_found']:7d} {f['intersecting_pairs_after_flips']:7d} {f['flips']:7d} "
       f"{c['self_intersecting_pairs']:6d} {r['mesh']['boundary_edges']:7d}")
 PY
     done

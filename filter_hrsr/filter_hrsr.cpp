@@ -79,14 +79,14 @@ void FilterHrsrPlugin::log_summary(const hrsr::ReconstructionReport& r, double s
     for (const hrsr::ComponentTopology& c : m.components)
         if (c.closed()) genus += (genus.isEmpty() ? "" : ", ") + QString::number(c.genus());
     log_message("HRsR: %zu input points, %zu used, %zu not in the mesh (%zu non-finite, %zu in "
-                "small components, %zu not in any triangle, %zu merged into other vertices); "
-                "%zu duplicates merged; r_v = %.4f %%",
+                "small components, %zu not in any triangle, %zu in folds, %zu merged into other "
+                "vertices); %zu duplicates merged; r_v = %.4f %%",
                 r.preprocess.input_points, r.points_used,
                 r.preprocess.input_points - r.referenced_input_points,
                 r.preprocess.count(hrsr::PointFate::NonFinite),
                 r.preprocess.count(hrsr::PointFate::SmallComponent) +
                     r.dropped_small_coarse_component.size(),
-                r.not_in_triangle.size(), r.merged_points,
+                r.not_in_triangle.size(), r.dropped_fold.size(), r.merged_points,
                 r.preprocess.count(hrsr::PointFate::Duplicate), 100.0 * r.vertex_reference_ratio);
     const hrsr::ComponentTopology* largest = hrsr::largest_component(m);
     log_message("HRsR: %zu vertices, %zu triangles, %zu boundary edges in %zu loops, %zu "
@@ -103,9 +103,12 @@ void FilterHrsrPlugin::log_summary(const hrsr::ReconstructionReport& r, double s
                     "%zu to %zu graph hops on the cloud RsR saw",
                     *lo, *hi);
     }
-    log_message("HRsR: fold repair (D-26): %zu intersecting triangle pairs, %zu edge flips, %zu "
-                "pairs left",
-                r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after);
+    log_message("HRsR: fold repair (D-26, D-32): %zu intersecting triangle pairs, %zu edge "
+                "flips, %zu pairs left; %zu vertices taken out (%zu holes filled again), %zu "
+                "faces cut, %zu pairs left",
+                r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after,
+                r.fold_removal.vertices_removed, r.fold_removal.holes_refilled,
+                r.fold_removal.faces_cut, r.fold_removal.pairs_after);
 }
 
 // A new layer is added; the input only changes its selection (select_dropped). MM_VERTNUMBER

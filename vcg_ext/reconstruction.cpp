@@ -6,6 +6,7 @@
 #include "hrsr/unsampled_triangles.h"
 #include "index_types.h"
 #include "mesh/fans.h"
+#include "mesh/fold_removal.h"
 #include "mesh/fold_repair.h"
 #include "mesh/small_holes_fill.h"
 #include "preprocess/components.h"
@@ -134,6 +135,49 @@ void repair_output_folds(const PreparedCloud& cloud,
     report.fold_repair = repair_folds(positions, mesh.triangles, rounds, exec);
 }
 
+// D-32 on the coordinates as the writers store them (the input's, at its precision): what the
+// flips left is cut out, so that the written mesh has no intersecting pair. Points whose every
+// vertex went are "dropped: fold".
+void remove_output_folds(const PointSet& input, const Execution& exec, Reconstruction& mesh,
+                         ReconstructionReport& report) {
+    Timer timer(report.timings, "fold removal");
+    std::vector<Vec3> written;
+    written.reserve(mesh.vertex_input_index.size());
+    for (std::uint32_t i : mesh.vertex_input_index) {
+        Vec3 p = input.positions[i];
+        if (input.precision == CoordinatePrecision::Float)
+            for (int k = 0; k < 3; ++k) p[k] = double(float(p[k]));
+        written.push_back(p);
+    }
+    FoldRemoval removal = remove_folds(written, mesh.vertex_normals, mesh.triangles, exec);
+    report.fold_removal = removal.stats;
+    if (removal.stats.vertices_removed == 0 && removal.stats.faces_cut == 0) return;
+    std::vector<std::uint8_t> was_vertex(input.size(), 0), is_vertex(input.size(), 0);
+    for (std::uint32_t i : mesh.vertex_input_index) was_vertex[i] = 1;
+    Reconstruction out;
+    out.triangles = std::move(mesh.triangles);
+    for (std::uint32_t v : removal.vertex_source) {
+        out.vertex_input_index.push_back(mesh.vertex_input_index[v]);
+        out.vertex_normals.push_back(mesh.vertex_normals[v]);
+        is_vertex[mesh.vertex_input_index[v]] = 1;
+    }
+    mesh = std::move(out);
+    for (std::uint32_t i = 0; i < input.size(); ++i)
+        if (was_vertex[i] && !is_vertex[i]) report.dropped_fold.push_back(i);
+    report.vertex_copies += removal.stats.vertex_copies;
+    report.mesh = measure_mesh(mesh.vertex_input_index.size(), mesh.triangles);
+}
+
+// The fold repair (D-26's flips, then D-32's removal); rounds = 0 turns both off.
+void repair_and_remove_folds(const PointSet& input, const PreparedCloud& cloud,
+                             const IndexVector<VertexIndex, PointIndex>& vertex_point, int rounds,
+                             const Execution& exec, Reconstruction& mesh,
+                             ReconstructionReport& report) {
+    if (rounds <= 0) return;
+    repair_output_folds(cloud, vertex_point, rounds, exec, mesh, report);
+    remove_output_folds(input, exec, mesh, report);
+}
+
 // A phase boundary: progress, and the chance to cancel before the phase's work.
 void begin_phase(const Execution& exec, const std::string& phase) {
     if (exec.progress) exec.progress->begin(phase);
@@ -150,11 +194,12 @@ void require_triangles(const Reconstruction& mesh, const ReconstructionReport& r
 // that is not a vertex shares that point's outcome (§13 item 10: every point has one).
 void account(const PointSet& input, const Reconstruction& mesh, ReconstructionReport& report) {
     const PreprocessReport& pre = report.preprocess;
-    enum : std::uint8_t { kOther, kVertex, kNoTriangle, kSmallCoarse };
+    enum : std::uint8_t { kOther, kVertex, kNoTriangle, kSmallCoarse, kFold };
     std::vector<std::uint8_t> outcome(input.size(), kOther);
     for (std::uint32_t i : mesh.vertex_input_index) outcome[i] = kVertex;
     for (std::uint32_t i : report.not_in_triangle) outcome[i] = kNoTriangle;
     for (std::uint32_t i : report.dropped_small_coarse_component) outcome[i] = kSmallCoarse;
+    for (std::uint32_t i : report.dropped_fold) outcome[i] = kFold;
     for (std::uint32_t i = 0; i < input.size(); ++i) {
         if (pre.fate[i] != PointFate::Duplicate) continue;
         switch (outcome[pre.duplicate_of[i]]) {
@@ -167,6 +212,9 @@ void account(const PointSet& input, const Reconstruction& mesh, ReconstructionRe
         case kSmallCoarse:
             report.dropped_small_coarse_component.push_back(i);
             break;
+        case kFold:
+            report.dropped_fold.push_back(i);
+            break;
         default:
             if (report.coarse_points > 0)
                 ++report.merged_points; // its point merged into another vertex
@@ -175,6 +223,7 @@ void account(const PointSet& input, const Reconstruction& mesh, ReconstructionRe
     std::sort(report.not_in_triangle.begin(), report.not_in_triangle.end());
     std::sort(report.dropped_small_coarse_component.begin(),
               report.dropped_small_coarse_component.end());
+    std::sort(report.dropped_fold.begin(), report.dropped_fold.end());
     report.referenced_input_points =
         std::size_t(std::count(outcome.begin(), outcome.end(), kVertex));
     report.vertex_reference_ratio =
@@ -263,7 +312,8 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     Reconstruction mesh =
         make_output(cloud, m.vertex_point, std::move(m.triangles), options.orient_outward, report);
     assembly.reset();
-    repair_output_folds(cloud, m.vertex_point, options.fold_repair_rounds, exec, mesh, report);
+    repair_and_remove_folds(input, cloud, m.vertex_point, options.fold_repair_rounds, exec, mesh,
+                            report);
     account(input, mesh, report);
     require_triangles(mesh, report);
     return mesh;
@@ -353,7 +403,8 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles),
                                       options.rsr.orient_outward, report);
     assembly.reset();
-    repair_output_folds(cloud, vertex_point, options.rsr.fold_repair_rounds, exec, mesh, report);
+    repair_and_remove_folds(input, cloud, vertex_point, options.rsr.fold_repair_rounds, exec, mesh,
+                            report);
     account(input, mesh, report);
     require_triangles(mesh, report);
     return mesh;

@@ -43,8 +43,10 @@ struct ReconstructionReport {
     /// Graph hops a handle's endpoints had to be apart, per RsR component in component order:
     /// n input spacings on the cloud RsR saw (D-27).
     std::vector<std::size_t> handle_hop_limits;
-    FoldRepairStats fold_repair;        ///< D-26, on the output mesh
-    std::size_t small_holes_filled = 0; ///< D-28: boundary loops of at most 5 edges closed
+    FoldRepairStats fold_repair;             ///< D-26, on the output mesh
+    FoldRemovalStats fold_removal;           ///< D-32, after D-26
+    std::vector<std::uint32_t> dropped_fold; ///< input indices of points D-32 took out
+    std::size_t small_holes_filled = 0;      ///< D-28: boundary loops of at most 5 edges closed
     /// D-30 (HRsR): triangles removed for an edge no RsR candidate could be (over a hole).
     std::size_t unsampled_triangles_removed = 0;
     MeshStats mesh;

@@ -15,6 +15,17 @@ struct FoldRepairStats {
     std::size_t rounds = 0; ///< rounds that flipped at least one edge
 };
 
+/// D-32 (mesh/fold_removal.h): what the flips left, removed, on the coordinates as written.
+struct FoldRemovalStats {
+    std::size_t pairs_before = 0;        ///< intersecting triangle pairs after the flips
+    std::size_t pairs_after = 0;         ///< pairs with both faces still in the mesh (0)
+    std::size_t vertices_removed = 0;    ///< vertices taken out with their fans (and not put back)
+    std::size_t vertices_reinserted = 0; ///< taken out, then put back into a face of the fill
+    std::size_t holes_refilled = 0;      ///< holes of those fans triangulated again
+    std::size_t faces_cut = 0;           ///< faces taken out without a fill (the last resort)
+    std::size_t vertex_copies = 0;       ///< made where a cut pinched a vertex (§5.8)
+};
+
 /// HRsR's re-expansion (hrsr/reexpansion.h, ALGORITHM.md §8).
 struct ReexpansionStats {
     std::size_t records = 0;           ///< collapse records available

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <map>
 #include <memory>
-#include <unordered_map>
 
 namespace hrsr {
 
@@ -135,7 +134,7 @@ class Repair {
 public:
     // `geometry` holds the mesh's triangles (welded by `representative`) in face order.
     Repair(Region& region, const std::vector<std::uint32_t>& representative,
-           TriangleGeometry& geometry, const TriangleGrid& grid)
+           TriangleGeometry& geometry, TriangleGrid& grid)
         : region_(region), mesh_(region.mesh()), representative_(representative),
           geometry_(geometry), grid_(grid), seen_in_search_(geometry.size(), 0) {}
 
@@ -198,11 +197,6 @@ private:
                                            std::uint32_t skip_b) {
         near_.clear();
         grid_.query(box, near_);
-        grid_.for_each_cell(box, [&](std::uint64_t c) {
-            const auto it = flipped_in_cell_.find(c);
-            if (it != flipped_in_cell_.end())
-                near_.insert(near_.end(), it->second.begin(), it->second.end());
-        });
         // Each face once (it is filed in several cells), marked with this search's number.
         ++search_;
         std::size_t unique = 0;
@@ -302,8 +296,7 @@ private:
                                   representative_[region_.global_vertex(s, 1)].value(),
                                   representative_[region_.global_vertex(s, 2)].value()});
                 // Filed again under its new cells (the old entries are filtered by box).
-                grid_.for_each_cell(geometry_.box(geometry_.triangle(h)),
-                                    [&](std::uint64_t c) { flipped_in_cell_[c].push_back(h); });
+                grid_.file_again(geometry_.box(geometry_.triangle(h)), h);
             }
             return g;
         }
@@ -336,14 +329,12 @@ private:
     SplitMesh& mesh_;
     const IndexView<VertexIndex, VertexIndex> representative_; ///< welded ids
     TriangleGeometry& geometry_;
-    const TriangleGrid& grid_;
+    TriangleGrid& grid_; ///< flipped faces are filed again
     std::vector<std::uint32_t> near_, around_;
     std::vector<Box> near_box_;                 ///< the boxes of near_
     std::vector<std::uint32_t> seen_in_search_; ///< per face: the last search that listed it
     std::uint32_t search_ = 0;
     std::vector<std::uint8_t> intersecting_; ///< per face: in a pair at the start of the round
-    /// Flipped faces by the cells their boxes covered after each flip.
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> flipped_in_cell_;
     Star star_;
 };
 
@@ -354,7 +345,7 @@ FoldRepairStats repair_folds(const std::vector<Vec3>& positions, std::vector<Tri
     if (triangles.size() < 2 || rounds <= 0) return {};
     const std::vector<std::uint32_t> representative = same_position_representatives(positions);
     TriangleGeometry geometry(positions, welded_triangles(triangles, representative));
-    const TriangleGrid grid(geometry, exec);
+    TriangleGrid grid(geometry, exec);
     FoldRepairStats stats;
     std::vector<TrianglePair> pairs = grid.all_pairs(geometry, exec);
     stats.pairs_before = stats.pairs_after = pairs.size();

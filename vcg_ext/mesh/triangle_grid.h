@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -49,6 +50,11 @@ public:
 
     const Triangle& triangle(std::uint32_t f) const { return triangles_[f]; }
     void set(std::uint32_t f, const Triangle& t) { triangles_[f] = t; }
+    /// Appends a face; returns its number.
+    std::uint32_t add(const Triangle& t) {
+        triangles_.push_back(t);
+        return std::uint32_t(triangles_.size() - 1);
+    }
     std::size_t size() const { return triangles_.size(); }
     const Vec3& position(std::uint32_t v) const { return positions_[v]; }
 
@@ -84,8 +90,8 @@ private:
 };
 
 // Faces filed by the cells of a uniform grid (about the mean face size) that their box covers,
-// as the faces stand when the grid is built. A face flipped later may reach other cells: the
-// repair adds its flipped faces to every query.
+// as the faces stand when the grid is built. A face flipped or added later may reach other
+// cells: the fold repair and removal file it again.
 class TriangleGrid {
 public:
     /// Files every non-degenerate triangle of `g` (at least one triangle).
@@ -104,12 +110,21 @@ public:
                 for (std::uint64_t z = lo[2]; z <= hi[2]; ++z) visit(index(x, y, z));
     }
 
-    /// Faces filed in the cells `box` covers (possibly repeated).
+    /// Faces filed in the cells `box` covers (possibly repeated), those filed again included.
     void query(const Box& box, std::vector<std::uint32_t>& out) const {
         for_each_cell(box, [&](std::uint64_t c) {
             auto it = std::lower_bound(entries_.begin(), entries_.end(), c << 32);
             for (; it != entries_.end() && cell(*it) == c; ++it) out.push_back(face(*it));
+            const auto late = late_.find(c);
+            if (late != late_.end())
+                out.insert(out.end(), late->second.begin(), late->second.end());
         });
+    }
+
+    /// Files face f (changed or added after the grid was built) under the cells `box` covers;
+    /// entries it had stay (callers test the boxes of what query() lists).
+    void file_again(const Box& box, std::uint32_t f) {
+        for_each_cell(box, [&](std::uint64_t c) { late_[c].push_back(f); });
     }
 
 private:
@@ -134,6 +149,7 @@ private:
     std::array<std::uint64_t, 3> cells_{1, 1, 1};
     std::vector<std::uint64_t> entries_; ///< cell << 32 | face, sorted
     std::vector<std::uint32_t> cell_start_;
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> late_; ///< file_again()
 };
 
 } // namespace hrsr

@@ -1,0 +1,163 @@
+// D-32: what the flips leave is cut out; the written mesh has no intersecting pair.
+#include "fold_fixtures.h"
+#include "io/point_set_reader.h"
+#include "mesh/fold_removal.h"
+#include "mesh/fold_repair.h"
+#include "mesh/mesh_stats.h"
+#include "mesh/self_intersections.h"
+#include "reconstruction.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+namespace hrsr {
+namespace {
+
+using testing::TestMesh;
+
+// Area-weighted vertex normals: on the folded fixtures they still face the sheet's way.
+std::vector<Vec3> face_normals_at_vertices(const TestMesh& m) {
+    std::vector<Vec3> n(m.positions.size(), Vec3(0, 0, 0));
+    for (const Triangle& t : m.triangles) {
+        const Vec3 a =
+            (m.positions[t[1]] - m.positions[t[0]]) ^ (m.positions[t[2]] - m.positions[t[0]]);
+        for (std::uint32_t v : t) n[v] += a;
+    }
+    for (Vec3& v : n) v.Normalize();
+    return n;
+}
+
+struct Removed {
+    FoldRemoval removal;
+    std::vector<Vec3> positions; ///< of the result's vertices
+    std::vector<Triangle> triangles;
+};
+
+Removed remove(const TestMesh& m, int threads = 0) {
+    Removed r;
+    r.triangles = m.triangles;
+    r.removal =
+        remove_folds(m.positions, face_normals_at_vertices(m), r.triangles, {threads, nullptr});
+    for (std::uint32_t v : r.removal.vertex_source) r.positions.push_back(m.positions[v]);
+    return r;
+}
+
+std::vector<long> genera(const MeshStats& s) {
+    std::vector<long> g;
+    for (const ComponentTopology& c : s.components) g.push_back(c.genus());
+    std::sort(g.begin(), g.end());
+    return g;
+}
+
+// No pair left by the exact test, a consistently oriented manifold, each vertex in a face, the
+// genus kept, and the boundary grown by at most `extra_boundary` edges.
+void expect_clean(const TestMesh& before, const Removed& after, std::size_t extra_boundary) {
+    ASSERT_FALSE(self_intersecting_pairs(before.positions, before.triangles, {}).empty())
+        << "the fixture has no fold";
+    EXPECT_TRUE(self_intersecting_pairs(after.positions, after.triangles, {}).empty());
+    EXPECT_EQ(after.removal.stats.pairs_after, 0u);
+    const FoldRemovalStats& st = after.removal.stats;
+    EXPECT_GT(st.vertices_removed + st.vertices_reinserted + st.faces_cut, 0u);
+    const MeshStats a = measure_mesh(before.positions.size(), before.triangles);
+    const MeshStats b = measure_mesh(after.positions.size(), after.triangles);
+    EXPECT_EQ(b.non_manifold_edges, 0u);
+    EXPECT_EQ(b.non_manifold_vertices, 0u);
+    EXPECT_EQ(b.inconsistently_oriented_edges, 0u);
+    EXPECT_EQ(b.unreferenced_vertices, 0u);
+    EXPECT_EQ(b.vertices, after.positions.size());
+    EXPECT_EQ(genera(a), genera(b));
+    EXPECT_LE(b.boundary_edges, a.boundary_edges + extra_boundary);
+}
+
+TEST(FoldRemoval, APushedVertexGoesAndItsHoleIsFilled) {
+    const TestMesh m = testing::pushed_vertex();
+    const Removed r = remove(m);
+    expect_clean(m, r, 0);
+    const FoldRemovalStats& st = r.removal.stats;
+    EXPECT_EQ(st.faces_cut, 0u);
+    EXPECT_GE(st.holes_refilled, 1u);
+    // Each removal takes out one vertex and fills its hole (two triangles fewer); a vertex put
+    // back splits a face (two more).
+    EXPECT_EQ(r.positions.size(), m.positions.size() - st.vertices_removed);
+    EXPECT_EQ(r.triangles.size(), m.triangles.size() - 2 * st.vertices_removed);
+    EXPECT_EQ(st.vertices_removed + st.vertices_reinserted, st.holes_refilled);
+}
+
+TEST(FoldRemoval, CrossingSheetsAreCutApart) {
+    const TestMesh m = testing::crossing_sheets();
+    const Removed r = remove(m);
+    // Two sheets crossing along a line: vertices along it go; what cannot be filled stays open.
+    expect_clean(m, r, 32); // 22 when written
+}
+
+TEST(FoldRemoval, AFoldAtABoundary) {
+    const TestMesh m = testing::boundary_fold();
+    const Removed r = remove(m);
+    expect_clean(m, r, 4);
+}
+
+TEST(FoldRemoval, OverlappingSpheresAndAPiercingTriangle) {
+    const TestMesh m = testing::overlapping_spheres();
+    const Removed r = remove(m);
+    // Every crossing face of the circle goes (each fill would cross the other sphere).
+    EXPECT_TRUE(self_intersecting_pairs(r.positions, r.triangles, {}).empty());
+    const MeshStats b = measure_mesh(r.positions.size(), r.triangles);
+    EXPECT_EQ(b.non_manifold_edges, 0u);
+    EXPECT_EQ(b.inconsistently_oriented_edges, 0u);
+    EXPECT_EQ(r.removal.stats.pairs_after, 0u);
+}
+
+TEST(FoldRemoval, FlatFoldOnFloats) {
+    const TestMesh m = testing::flat_fold_on_floats();
+    const Removed r = remove(m);
+    EXPECT_TRUE(self_intersecting_pairs(r.positions, r.triangles, {}).empty());
+    EXPECT_EQ(r.triangles.size(), 1u); // a border vertex with one face: the face goes
+}
+
+TEST(FoldRemoval, CleanMeshUnchanged) {
+    const TestMesh m = testing::uv_sphere();
+    const Removed r = remove(m);
+    EXPECT_EQ(r.removal.stats.pairs_before, 0u);
+    EXPECT_EQ(r.triangles, m.triangles);
+    EXPECT_EQ(r.positions, m.positions);
+}
+
+TEST(FoldRemoval, SameResultOnOneAndTwoThreads) {
+    const TestMesh m = testing::overlapping_spheres();
+    const Removed one = remove(m, 1), two = remove(m, 2);
+    EXPECT_EQ(one.triangles, two.triangles);
+    EXPECT_EQ(one.removal.vertex_source, two.removal.vertex_source);
+}
+
+// The shipped sample at the defaults, both methods: the written coordinates (float) have no
+// intersecting pair, every point taken out is reported as dropped in a fold, and r_v stays.
+TEST(FoldRemoval, OwlAtDefaultsHasNoIntersectingPair) {
+    const PointSet cloud = io::read_point_set(HRSR_SAMPLE);
+    for (const Method method : {Method::Hrsr, Method::Rsr}) {
+        ReconstructionOptions options;
+        options.method = method;
+        ReconstructionReport report;
+        const Reconstruction mesh = reconstruct(cloud, options, {}, report);
+        std::vector<Vec3> written;
+        for (std::uint32_t i : mesh.vertex_input_index) {
+            const Vec3& p = cloud.positions[i];
+            written.emplace_back(float(p[0]), float(p[1]), float(p[2]));
+        }
+        EXPECT_TRUE(self_intersecting_pairs(written, mesh.triangles, {}).empty());
+        EXPECT_EQ(report.fold_removal.pairs_after, 0u);
+        const std::set<std::uint32_t> vertices(mesh.vertex_input_index.begin(),
+                                               mesh.vertex_input_index.end());
+        for (std::uint32_t i : report.dropped_fold) EXPECT_EQ(vertices.count(i), 0u);
+        EXPECT_LE(report.dropped_fold.size(), report.fold_removal.vertices_removed);
+        EXPECT_GE(report.vertex_reference_ratio, 0.999);
+        EXPECT_EQ(report.mesh.non_manifold_edges, 0u);
+        EXPECT_EQ(report.mesh.non_manifold_vertices, 0u);
+        EXPECT_EQ(report.mesh.inconsistently_oriented_edges, 0u);
+        EXPECT_EQ(report.mesh.unreferenced_vertices, 0u);
+    }
+}
+
+} // namespace
+} // namespace hrsr

@@ -1,0 +1,610 @@
+#include "mesh/fold_removal.h"
+
+#include "mesh/fans.h"
+#include "mesh/triangle_grid.h"
+#include "mesh/welding.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <tuple>
+#include <unordered_map>
+#include <utility>
+
+namespace hrsr {
+
+namespace {
+
+// Holes with more corners get the fans only: the best triangulation is cubic in the corners.
+constexpr std::size_t kMaxOptimisedHole = 48;
+// The most vertices a fold takes out with it before its hole is left open instead.
+constexpr std::size_t kMaxRegionVertices = 8;
+constexpr std::uint32_t kNoFace = ~0u;
+
+/// The hole a vertex's fan leaves: its link, in the fan's order.
+struct Hole {
+    std::vector<std::uint32_t> corners;
+    bool closed = false; ///< an inner vertex: each side, the last to the first too, is an edge
+};
+
+// The smallest angle of triangle abc in radians (0 when two corners coincide).
+double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const auto angle = [](const Vec3& u, const Vec3& v) {
+        return std::atan2((u ^ v).Norm(), u.dot(v));
+    };
+    if (a == b || b == c || c == a) return 0;
+    return std::min({angle(b - a, c - a), angle(c - b, a - b), angle(a - c, b - c)});
+}
+
+// The hole of `faces` around v (each face holds v once): its link edges chained from the one
+// corner that starts no chain... or, for an inner vertex, from the first face's. Fails (nullopt)
+// where the link is not one simple path or cycle: a vertex of several fans, a repeated corner.
+std::optional<Hole> link_of(std::uint32_t v, const std::vector<Triangle>& faces) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (const Triangle& t : faces) {
+        const auto k = std::size_t(std::find(t.begin(), t.end(), v) - t.begin());
+        if (k == 3 || std::count(t.begin(), t.end(), v) != 1) return std::nullopt;
+        edges.emplace_back(t[(k + 1) % 3], t[(k + 2) % 3]);
+    }
+    const auto from = [&](std::uint32_t a) {
+        return std::find_if(edges.begin(), edges.end(),
+                            [a](const auto& e) { return e.first == a; });
+    };
+    std::optional<std::uint32_t> start;
+    for (const auto& e : edges) {
+        const auto same_source = std::count_if(edges.begin(), edges.end(),
+                                               [&](const auto& o) { return o.first == e.first; });
+        const auto same_target = std::count_if(edges.begin(), edges.end(),
+                                               [&](const auto& o) { return o.second == e.second; });
+        if (same_source > 1 || same_target > 1) return std::nullopt;
+        const bool is_target = std::any_of(edges.begin(), edges.end(),
+                                           [&](const auto& o) { return o.second == e.first; });
+        if (!is_target) {
+            if (start) return std::nullopt; // two chains: two fans
+            start = e.first;
+        }
+    }
+    Hole hole;
+    hole.closed = !start;
+    std::uint32_t corner = start.value_or(edges.front().first);
+    hole.corners.push_back(corner);
+    for (std::size_t used = 0; used < edges.size(); ++used) {
+        const auto e = from(corner);
+        if (e == edges.end()) return std::nullopt;
+        corner = e->second;
+        if (corner == hole.corners.front()) break;
+        hole.corners.push_back(corner);
+    }
+    // Every edge used once, and no corner twice (the chain closed only at its start).
+    const std::size_t expected = hole.closed ? edges.size() : edges.size() + 1;
+    std::vector<std::uint32_t> sorted = hole.corners;
+    std::sort(sorted.begin(), sorted.end());
+    if (hole.corners.size() != expected ||
+        std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end() ||
+        std::binary_search(sorted.begin(), sorted.end(), v))
+        return std::nullopt;
+    return hole;
+}
+
+/// The border of a disc of faces, as a hole, and the vertices inside it.
+struct DiscBorder {
+    Hole hole;
+    std::vector<std::uint32_t> inner; ///< the vertices that go with the faces
+};
+
+class Remover {
+public:
+    Remover(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+            const std::vector<Triangle>& triangles, const Execution& exec)
+        : positions_(positions), normals_(normals), triangles_(triangles),
+          representative_(same_position_representatives(positions)),
+          geometry_(positions, welded_triangles(triangles, representative_)),
+          grid_(geometry_, exec), at_(corners_by_vertex(positions.size(), triangles)),
+          alive_(triangles.size(), 1), seen_(triangles.size(), 0) {
+        pairs_ = grid_.all_pairs(geometry_, exec);
+        index_pairs();
+    }
+
+    // Every pair, in order, while both its faces stand.
+    void run(FoldRemovalStats& stats) {
+        stats.pairs_before = pairs_.size();
+        for (const TrianglePair& p : pairs_)
+            if (alive_[p.first] && alive_[p.second]) resolve(p, stats);
+        stats.vertices_reinserted = reinserted_;
+        stats.vertices_removed -= reinserted_;
+        stats.pairs_after = std::size_t(std::count_if(pairs_.begin(), pairs_.end(), [&](auto p) {
+            return alive_[p.first] && alive_[p.second];
+        }));
+    }
+
+    // The faces that stand (kept ones in order, then the new ones) over the vertices that
+    // still have one; pinched vertices split into copies.
+    FoldRemoval result(std::vector<Triangle>& triangles, FoldRemovalStats stats) const {
+        triangles.clear();
+        for (std::size_t f = 0; f < triangles_.size(); ++f)
+            if (alive_[f]) triangles.push_back(triangles_[f]);
+        std::vector<std::uint32_t> vertex_of(positions_.size(), ~0u), source;
+        for (const Triangle& t : triangles)
+            for (std::uint32_t v : t) vertex_of[v] = 0;
+        for (std::uint32_t v = 0; v < positions_.size(); ++v)
+            if (vertex_of[v] == 0) {
+                vertex_of[v] = std::uint32_t(source.size());
+                source.push_back(v);
+            }
+        for (Triangle& t : triangles)
+            for (std::uint32_t& v : t) v = vertex_of[v];
+        const std::vector<std::uint32_t> copies_of =
+            split_non_manifold_vertices(source.size(), triangles);
+        FoldRemoval out;
+        stats.vertex_copies = copies_of.size() - source.size();
+        out.stats = stats;
+        out.vertex_source.reserve(copies_of.size());
+        for (std::uint32_t v : copies_of) out.vertex_source.push_back(source[v]);
+        return out;
+    }
+
+private:
+    // Per face, the faces it intersects (CSR), and how many of them stand.
+    void index_pairs() {
+        partner_start_.assign(triangles_.size() + 1, 0);
+        for (const TrianglePair& p : pairs_) {
+            ++partner_start_[p.first + 1];
+            ++partner_start_[p.second + 1];
+        }
+        for (std::size_t f = 0; f < triangles_.size(); ++f)
+            partner_start_[f + 1] += partner_start_[f];
+        partner_.resize(partner_start_.back());
+        std::vector<std::uint32_t> next(partner_start_.begin(), partner_start_.end() - 1);
+        for (const TrianglePair& p : pairs_) {
+            partner_[next[p.first]++] = p.second;
+            partner_[next[p.second]++] = p.first;
+        }
+        live_pairs_.resize(triangles_.size());
+        for (std::size_t f = 0; f < triangles_.size(); ++f)
+            live_pairs_[f] = partner_start_[f + 1] - partner_start_[f];
+    }
+
+    // A corner of the pair goes: the first, by most pairs around it, whose hole can be filled
+    // facing its normals, then without that condition; else the first one's hole stays open.
+    void resolve(const TrianglePair& p, FoldRemovalStats& stats) {
+        std::vector<std::pair<std::size_t, std::uint32_t>> candidates; // (-pairs, vertex)
+        for (std::uint32_t f : {p.first, p.second})
+            for (std::uint32_t v : triangles_[f]) {
+                std::size_t pairs = 0;
+                for (std::uint32_t g : faces_of(v)) pairs += live_pairs_[g];
+                candidates.emplace_back(std::numeric_limits<std::size_t>::max() - pairs, v);
+            }
+        std::sort(candidates.begin(), candidates.end());
+        candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+        // A face on the border folded over (facing away from its corners' normals) is a flap
+        // that no point needs: it goes first, which only moves the border.
+        for (std::uint32_t f : {p.first, p.second})
+            if (border_edges(f) == 1 && !proper(triangles_[f], true)) {
+                retire(f);
+                ++stats.faces_cut;
+                return;
+            }
+        for (const bool facing : {true, false})
+            for (const auto& c : candidates)
+                if (refill(c.second, facing)) {
+                    ++stats.vertices_removed;
+                    ++stats.holes_refilled;
+                    return;
+                }
+        for (const auto& c : candidates)
+            if (const std::size_t removed = refill_region(c.second)) {
+                stats.vertices_removed += removed;
+                ++stats.holes_refilled;
+                return;
+            }
+        // The last resort: one face of the pair goes, the one that opens the mesh least (a
+        // face with an edge or two on the border only moves the border), then the one in more
+        // pairs.
+        const auto cost = [&](std::uint32_t f) {
+            return std::make_tuple(3 - 2 * border_edges(f), -std::int64_t(live_pairs_[f]), f);
+        };
+        retire(std::min(p.first, p.second, [&](auto a, auto b) { return cost(a) < cost(b); }));
+        ++stats.faces_cut;
+    }
+
+    // Edges of face f in no other standing face.
+    int border_edges(std::uint32_t f) {
+        alive_[f] = 0;
+        int count = 0;
+        for (int k = 0; k < 3; ++k)
+            count += !has_edge(triangles_[f][k], triangles_[f][(k + 1) % 3]);
+        alive_[f] = 1;
+        return count;
+    }
+
+    // Where no single fan's hole can be filled: a disc of fans around v, grown one vertex at a
+    // time towards the face that stood in the way of the last fill, until its hole can be
+    // filled (rather than left open). Returns the vertices removed (0: none, nothing changed).
+    std::size_t refill_region(std::uint32_t v) {
+        std::vector<std::uint32_t> region{v};
+        for (std::size_t size = 1; size <= kMaxRegionVertices; ++size) {
+            std::vector<std::uint32_t> faces;
+            for (std::uint32_t r : region)
+                for (std::uint32_t f : faces_of(r)) faces.push_back(f);
+            std::sort(faces.begin(), faces.end());
+            faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+            for (std::uint32_t f : faces) alive_[f] = 0; // while the fills are tested
+            const std::optional<DiscBorder> border = disc_border(faces);
+            std::optional<std::vector<Triangle>> fill;
+            blocker_ = kNoFace;
+            for (const bool facing : {true, false})
+                if (border && !fill) fill = first_fitting_fill(border->hole, facing);
+            for (std::uint32_t f : faces) alive_[f] = 1;
+            if (!border) return 0;
+            if (fill) {
+                for (std::uint32_t f : faces) retire(f);
+                for (const Triangle& t : *fill) add(t);
+                reinserted_ += reinsert(border->inner, border->hole.corners);
+                return border->inner.size();
+            }
+            region.push_back(nearest_corner(border->hole.corners, region));
+        }
+        return 0;
+    }
+
+    // The hole `faces` (already marked dead) leave, when they form a disc: the border edges
+    // they share with standing faces, wound as the faces are, as one simple loop (an inner
+    // disc) or one simple path whose ends the fill will join (a disc on the mesh's border,
+    // whose border edges there go with it).
+    std::optional<DiscBorder> disc_border(const std::vector<std::uint32_t>& faces) const {
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> directed;
+        for (std::uint32_t f : faces)
+            for (int k = 0; k < 3; ++k)
+                directed.emplace_back(triangles_[f][k], triangles_[f][(k + 1) % 3]);
+        std::sort(directed.begin(), directed.end());
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> shared; // sorted by source
+        std::vector<std::uint32_t> vertices;
+        std::size_t inner_edges_twice = 0, mesh_border = 0;
+        for (const auto& [a, b] : directed) {
+            vertices.push_back(a);
+            if (std::binary_search(directed.begin(), directed.end(), std::make_pair(b, a)))
+                ++inner_edges_twice;
+            else if (has_edge(a, b))
+                shared.emplace_back(a, b);
+            else
+                ++mesh_border;
+        }
+        std::sort(vertices.begin(), vertices.end());
+        vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+        // A disc: V − E + F = 1.
+        const std::size_t edges = shared.size() + mesh_border + inner_edges_twice / 2;
+        if (shared.empty() || vertices.size() + faces.size() != edges + 1) return std::nullopt;
+        DiscBorder d;
+        d.hole.closed = mesh_border == 0;
+        if (!chain(shared, d.hole)) return std::nullopt;
+        // The vertices that go: those with no standing face (a corner of the border keeps its
+        // standing faces; so does a vertex where the disc touches the rest at one point).
+        for (std::uint32_t v : vertices)
+            if (faces_of(v).empty()) d.inner.push_back(v);
+        return d;
+    }
+
+    // Chains `edges` (sorted by source) into hole.corners: a loop if hole.closed, else a path
+    // from the one source that is no target. False unless every edge is used once and no
+    // corner repeats.
+    static bool chain(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges,
+                      Hole& hole) {
+        const auto from = [&](std::uint32_t a) {
+            const auto e = std::lower_bound(edges.begin(), edges.end(), std::make_pair(a, 0u));
+            return e != edges.end() && e->first == a ? e : edges.end();
+        };
+        std::uint32_t corner = edges.front().first;
+        if (!hole.closed) {
+            std::vector<std::uint32_t> targets;
+            for (const auto& e : edges) targets.push_back(e.second);
+            std::sort(targets.begin(), targets.end());
+            std::size_t starts = 0;
+            for (const auto& e : edges)
+                if (!std::binary_search(targets.begin(), targets.end(), e.first)) {
+                    corner = e.first;
+                    ++starts;
+                }
+            if (starts != 1) return false;
+        }
+        hole.corners.push_back(corner);
+        for (std::size_t used = 0; used < edges.size(); ++used) {
+            const auto e = from(corner);
+            if (e == edges.end() || (e + 1 != edges.end() && (e + 1)->first == corner))
+                return false;
+            corner = e->second;
+            hole.corners.push_back(corner);
+        }
+        if (hole.closed) {
+            if (hole.corners.back() != hole.corners.front()) return false;
+            hole.corners.pop_back();
+        }
+        std::vector<std::uint32_t> sorted = hole.corners;
+        std::sort(sorted.begin(), sorted.end());
+        return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+    }
+
+    // The corner of the hole nearest to the face that stood in the way of the last fill (or to
+    // the region's first vertex), not yet in the region.
+    std::uint32_t nearest_corner(const std::vector<std::uint32_t>& corners,
+                                 const std::vector<std::uint32_t>& region) const {
+        Vec3 target = positions_[region.front()];
+        if (blocker_ != kNoFace) {
+            const Triangle& b = triangles_[blocker_];
+            target = (positions_[b[0]] + positions_[b[1]] + positions_[b[2]]) / 3.0;
+        }
+        std::uint32_t best = corners.front();
+        double best_distance = std::numeric_limits<double>::infinity();
+        for (std::uint32_t c : corners) {
+            const double d = (positions_[c] - target).SquaredNorm();
+            if (d < best_distance) {
+                best_distance = d;
+                best = c;
+            }
+        }
+        return best;
+    }
+
+    // Removes v's fan and fills its hole, if a triangulation fits.
+    bool refill(std::uint32_t v, bool facing) {
+        const std::vector<std::uint32_t> fan = faces_of(v);
+        std::vector<Triangle> fan_triangles;
+        for (std::uint32_t f : fan) fan_triangles.push_back(triangles_[f]);
+        const std::optional<Hole> hole = link_of(v, fan_triangles);
+        if (!hole || (hole->closed && hole->corners.size() < 3)) return false;
+        for (std::uint32_t f : fan) alive_[f] = 0; // while the fills are tested
+        const std::optional<std::vector<Triangle>> fill = first_fitting_fill(*hole, facing);
+        for (std::uint32_t f : fan) alive_[f] = 1;
+        if (!fill) return false;
+        for (std::uint32_t f : fan) retire(f);
+        for (const Triangle& t : *fill) add(t);
+        reinserted_ += reinsert({v}, hole->corners);
+        return true;
+    }
+
+    // Puts removed vertices back where they fit into a face around the hole's `corners` (the
+    // fill's, or one next to it): a face split into three around the vertex, proper triangles
+    // facing their normals that cross no standing face, the split with the largest smallest
+    // angle. Returns how many went back.
+    std::size_t reinsert(const std::vector<std::uint32_t>& removed,
+                         const std::vector<std::uint32_t>& corners) {
+        std::size_t back = 0;
+        for (std::uint32_t r : removed) {
+            if (!faces_of(r).empty()) continue; // not removed after all
+            std::vector<std::uint32_t> faces;
+            for (std::uint32_t w : corners)
+                for (std::uint32_t f : faces_of(w)) faces.push_back(f);
+            std::sort(faces.begin(), faces.end());
+            faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+            std::vector<std::pair<double, std::uint32_t>> candidates; // (−angle, face)
+            for (std::uint32_t f : faces) {
+                double smallest = 4;
+                bool proper_split = true;
+                for (const Triangle& t : split_around(triangles_[f], r)) {
+                    proper_split = proper_split && proper(t, true);
+                    smallest = std::min(smallest, angle(t));
+                }
+                if (proper_split) candidates.emplace_back(-smallest, f);
+            }
+            std::sort(candidates.begin(), candidates.end());
+            for (const auto& [negative_angle, f] : candidates) {
+                const std::array<Triangle, 3> split = split_around(triangles_[f], r);
+                alive_[f] = 0;
+                bool fits = true;
+                for (std::size_t k = 0; k < 3 && fits; ++k) {
+                    fits = !intersects_standing(welded(split[k]));
+                    for (std::size_t l = 0; l < k && fits; ++l)
+                        fits = !geometry_.intersect(welded(split[k]), welded(split[l]));
+                }
+                alive_[f] = 1;
+                if (!fits) continue;
+                retire(f);
+                for (const Triangle& t : split) add(t);
+                ++back;
+                break;
+            }
+        }
+        return back;
+    }
+
+    static std::array<Triangle, 3> split_around(const Triangle& t, std::uint32_t r) {
+        return {{{t[0], t[1], r}, {t[1], t[2], r}, {t[2], t[0], r}}};
+    }
+
+    std::optional<std::vector<Triangle>> first_fitting_fill(const Hole& hole, bool facing) {
+        const std::size_t m = hole.corners.size();
+        // An open hole's last side is new: it must not be an edge already.
+        if (!hole.closed && has_edge(hole.corners.back(), hole.corners.front()))
+            return std::nullopt;
+        if (m == 2) return std::vector<Triangle>(); // one face at a border vertex
+        if (m <= kMaxOptimisedHole) {
+            // The best by angle alone first (cheap), then the best among triangles that cross
+            // no standing face.
+            for (const bool avoid_crossings : {false, true}) {
+                std::vector<Triangle> best = best_fill(hole, facing, avoid_crossings);
+                if (!best.empty() && fits(hole, best, facing)) return best;
+            }
+            return std::nullopt;
+        }
+        for (std::size_t apex = 0; apex < m; ++apex) {
+            std::vector<Triangle> fan;
+            for (std::size_t i = 1; i + 1 < m; ++i)
+                fan.push_back({hole.corners[apex], hole.corners[(apex + i) % m],
+                               hole.corners[(apex + i + 1) % m]});
+            if (fits(hole, fan, facing)) return fan;
+        }
+        return std::nullopt;
+    }
+
+    // The triangulation of the hole with the largest smallest angle (dynamic programming over
+    // its corners in order, which keeps the fan's orientation), whose diagonals are not edges
+    // yet, of proper triangles that (if asked) cross no standing face; empty when there is none.
+    std::vector<Triangle> best_fill(const Hole& hole, bool facing, bool avoid_crossings) {
+        const std::vector<std::uint32_t>& c = hole.corners;
+        const std::size_t m = c.size();
+        const auto diagonal_free = [&](std::size_t i, std::size_t j) {
+            return j == i + 1 || (i == 0 && j == m - 1) || !has_edge(c[i], c[j]);
+        };
+        std::vector<double> best(m * m, -1);
+        std::vector<std::size_t> apex(m * m, 0);
+        for (std::size_t i = 0; i + 1 < m; ++i) best[i * m + i + 1] = 4; // above any angle
+        for (std::size_t span = 2; span < m; ++span)
+            for (std::size_t i = 0; i + span < m; ++i) {
+                const std::size_t j = i + span;
+                if (!diagonal_free(i, j)) continue;
+                for (std::size_t k = i + 1; k < j; ++k) {
+                    const Triangle t{c[i], c[k], c[j]};
+                    const double sub = std::min(best[i * m + k], best[k * m + j]);
+                    if (sub <= best[i * m + j] || sub <= 0) continue; // cannot do better
+                    const bool usable =
+                        proper(t, facing) && (!avoid_crossings || !intersects_standing(welded(t)));
+                    const double q = std::min(sub, usable ? angle(t) : -1.0);
+                    if (q > best[i * m + j]) {
+                        best[i * m + j] = q;
+                        apex[i * m + j] = k;
+                    }
+                }
+            }
+        std::vector<Triangle> fill;
+        if (best[m - 1] <= 0) return fill;
+        std::vector<std::pair<std::size_t, std::size_t>> todo{{0, m - 1}};
+        while (!todo.empty()) {
+            const auto [i, j] = todo.back();
+            todo.pop_back();
+            if (j < i + 2) continue;
+            const std::size_t k = apex[i * m + j];
+            fill.push_back({c[i], c[k], c[j]});
+            todo.emplace_back(i, k);
+            todo.emplace_back(k, j);
+        }
+        return fill;
+    }
+
+    double angle(const Triangle& t) const {
+        return smallest_angle(positions_[t[0]], positions_[t[1]], positions_[t[2]]);
+    }
+
+    // Not degenerate for the pair test and, if asked, facing the way its corners' normals do.
+    bool proper(const Triangle& t, bool facing) const {
+        if (geometry_.degenerate(welded(t))) return false;
+        if (!facing) return true;
+        const Vec3& a = positions_[t[0]];
+        const Vec3 n = (positions_[t[1]] - a) ^ (positions_[t[2]] - a);
+        return n.dot(normals_[t[0]] + normals_[t[1]] + normals_[t[2]]) > 0;
+    }
+
+    // A fill fits: proper triangles, no diagonal that is an edge already, no intersection
+    // among its triangles or with any standing face.
+    bool fits(const Hole& hole, const std::vector<Triangle>& fill, bool facing) {
+        const std::size_t m = hole.corners.size();
+        const auto side = [&](std::uint32_t a, std::uint32_t b) {
+            const auto i = std::size_t(std::find(hole.corners.begin(), hole.corners.end(), a) -
+                                       hole.corners.begin());
+            const auto j = std::size_t(std::find(hole.corners.begin(), hole.corners.end(), b) -
+                                       hole.corners.begin());
+            const std::size_t d = i > j ? i - j : j - i;
+            return d == 1 || d == m - 1;
+        };
+        for (std::size_t i = 0; i < fill.size(); ++i) {
+            const Triangle& t = fill[i];
+            if (!proper(t, facing)) return false;
+            for (int k = 0; k < 3; ++k)
+                if (!side(t[k], t[(k + 1) % 3]) && has_edge(t[k], t[(k + 1) % 3])) return false;
+            for (std::size_t j = 0; j < i; ++j)
+                if (geometry_.intersect(welded(t), welded(fill[j]))) return false;
+            if (intersects_standing(welded(t))) return false; // blocker_ is set
+        }
+        return true;
+    }
+
+    bool intersects_standing(const Triangle& t) {
+        const Box box = geometry_.box(t);
+        near_.clear();
+        grid_.query(box, near_);
+        ++search_;
+        for (std::uint32_t f : near_) {
+            if (seen_[f] == search_ || !alive_[f]) continue;
+            seen_[f] = search_;
+            if (geometry_.intersect(t, geometry_.triangle(f))) {
+                blocker_ = f;
+                return true;
+            }
+        }
+        return false;
+    }
+
+    Triangle welded(const Triangle& t) const {
+        return {representative_[t[0]], representative_[t[1]], representative_[t[2]]};
+    }
+
+    std::vector<std::uint32_t> faces_of(std::uint32_t v) const {
+        std::vector<std::uint32_t> faces;
+        for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
+            if (alive_[at_.corner[e] / 3]) faces.push_back(at_.corner[e] / 3);
+        const auto it = added_at_.find(v);
+        if (it != added_at_.end())
+            for (std::uint32_t f : it->second)
+                if (alive_[f]) faces.push_back(f);
+        return faces;
+    }
+
+    bool has_edge(std::uint32_t a, std::uint32_t b) const {
+        for (std::uint32_t f : faces_of(a))
+            if (std::find(triangles_[f].begin(), triangles_[f].end(), b) != triangles_[f].end())
+                return true;
+        return false;
+    }
+
+    // A face leaves the mesh: the pairs it was in are gone.
+    void retire(std::uint32_t f) {
+        alive_[f] = 0;
+        if (f + 1 >= partner_start_.size()) return; // a new face is in no pair
+        for (std::uint32_t e = partner_start_[f]; e < partner_start_[f + 1]; ++e)
+            if (alive_[partner_[e]]) --live_pairs_[partner_[e]];
+    }
+
+    void add(const Triangle& t) {
+        const auto f = std::uint32_t(triangles_.size());
+        triangles_.push_back(t);
+        geometry_.add(welded(t));
+        alive_.push_back(1);
+        seen_.push_back(0);
+        live_pairs_.push_back(0);
+        for (std::uint32_t v : t) added_at_[v].push_back(f);
+        grid_.file_again(geometry_.box(welded(t)), f);
+    }
+
+    const std::vector<Vec3>& positions_;
+    const std::vector<Vec3>& normals_;
+    std::vector<Triangle> triangles_; ///< by vertex; faces added at the end
+    const std::vector<std::uint32_t> representative_;
+    TriangleGeometry geometry_; ///< the same faces, welded
+    TriangleGrid grid_;         ///< new faces are filed again
+    const VertexCorners at_;    ///< the given faces around each vertex
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> added_at_;
+    std::vector<std::uint8_t> alive_;
+    std::vector<TrianglePair> pairs_;
+    std::vector<std::uint32_t> partner_start_, partner_, live_pairs_;
+    std::vector<std::uint32_t> near_, seen_; ///< seen_: the last search that met the face
+    std::uint32_t search_ = 0;
+    std::uint32_t blocker_ = kNoFace; ///< the standing face that the last fill crossed
+    std::size_t reinserted_ = 0;      ///< removed vertices put back (reinsert)
+};
+
+} // namespace
+
+FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+                         std::vector<Triangle>& triangles, const Execution& exec) {
+    FoldRemoval out;
+    if (triangles.size() < 2) {
+        for (std::uint32_t v = 0; v < positions.size(); ++v) out.vertex_source.push_back(v);
+        return out;
+    }
+    Remover remover(positions, normals, triangles, exec);
+    FoldRemovalStats stats;
+    remover.run(stats);
+    return remover.result(triangles, stats);
+}
+
+} // namespace hrsr

@@ -1,0 +1,39 @@
+// The last step against self-intersections (deviation D-32): the folds that the flips of D-26
+// could not undo are cut out, vertex by vertex.
+#pragma once
+
+#include "mesh/triangle_mesh.h"
+#include "parallel.h"
+#include "point_set.h"
+#include "reconstruction_stats.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace hrsr {
+
+struct FoldRemoval {
+    FoldRemovalStats stats;
+    /// For each vertex of the result, the vertex of the given mesh it is: vertices left without
+    /// a face are gone, copies of pinched vertices are appended (§5.8).
+    std::vector<std::uint32_t> vertex_source;
+};
+
+/// D-32. Every pair of intersecting triangles (the rule of self_intersections.h, exact, on
+/// `positions` as given: vertices at one position count as one) is taken in pair order while
+/// both of its faces stand. One corner of the pair is removed with its fan, and the hole is
+/// triangulated again: the corners whose fans take part in the most pairs are tried first, and
+/// the triangulations (the one with the largest smallest angle, then the fans from each corner
+/// of the hole) in order until one fits: no degenerate triangle, no edge the mesh already has,
+/// no intersection with any face or with each other, and (before a second try that drops it)
+/// each triangle facing the way its corners' `normals` do. Where no corner's hole can be filled
+/// so, a disc of fans grown around a corner towards what stood in the way (up to 8 vertices)
+/// is tried; where that fails too, one face of the pair goes: the one that opens the mesh least
+/// (an edge on the border: the border only moves), then the one in more pairs. New faces
+/// intersect nothing and every step removes a face of the pair, so no pair is left. Sequential, in
+/// a fixed order: the same on any number of threads. `triangles` (a consistently oriented manifold)
+/// is rewritten over the result's vertices: kept faces in their order, then the new ones.
+FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+                         std::vector<Triangle>& triangles, const Execution& exec);
+
+} // namespace hrsr
