@@ -1,10 +1,12 @@
 // D-32: what the flips leave is cut out; the written mesh has no intersecting pair.
 #include "fold_fixtures.h"
 #include "io/point_set_reader.h"
+#include "mesh/face_quality.h"
 #include "mesh/fold_removal.h"
 #include "mesh/fold_repair.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/self_intersections.h"
+#include "mesh/welding.h"
 #include "reconstruction.h"
 
 #include <gtest/gtest.h>
@@ -146,6 +148,9 @@ TEST(FoldRemoval, OwlAtDefaultsHasNoIntersectingPair) {
             written.emplace_back(float(p[0]), float(p[1]), float(p[2]));
         }
         EXPECT_TRUE(self_intersecting_pairs(written, mesh.triangles, {}).empty());
+        const std::vector<Triangle> welded =
+            welded_triangles(mesh.triangles, same_position_representatives(written));
+        EXPECT_EQ(face_quality(written, mesh.triangles, welded).duplicate_faces, 0u);
         EXPECT_EQ(report.fold_removal.pairs_after, 0u);
         const std::set<std::uint32_t> vertices(mesh.vertex_input_index.begin(),
                                                mesh.vertex_input_index.end());

@@ -414,10 +414,13 @@ private:
 
     std::optional<std::vector<Triangle>> first_fitting_fill(const Hole& hole, bool facing) {
         const std::size_t m = hole.corners.size();
-        // An open hole's last side is new: it must not be an edge already.
-        if (!hole.closed && has_edge(hole.corners.back(), hole.corners.front()))
+        if (m == 2) return std::vector<Triangle>(); // one face at a border vertex: it just goes
+        // An open hole's last side is new, or a border edge whose face lies on its other side
+        // (the fill then closes the notch).
+        const std::uint32_t first = hole.corners.front(), last = hole.corners.back();
+        if (!hole.closed && has_edge(last, first) &&
+            (!has_directed_edge(first, last) || has_directed_edge(last, first)))
             return std::nullopt;
-        if (m == 2) return std::vector<Triangle>(); // one face at a border vertex
         if (m <= kMaxOptimisedHole) {
             // The best by angle alone first (cheap), then the best among triangles that cross
             // no standing face.
@@ -457,8 +460,8 @@ private:
                     const Triangle t{c[i], c[k], c[j]};
                     const double sub = std::min(best[i * m + k], best[k * m + j]);
                     if (sub <= best[i * m + j] || sub <= 0) continue; // cannot do better
-                    const bool usable =
-                        proper(t, facing) && (!avoid_crossings || !intersects_standing(welded(t)));
+                    const bool usable = proper(t, facing) && !repeats_a_face(t) &&
+                                        (!avoid_crossings || !intersects_standing(welded(t)));
                     const double q = std::min(sub, usable ? angle(t) : -1.0);
                     if (q > best[i * m + j]) {
                         best[i * m + j] = q;
@@ -508,7 +511,7 @@ private:
         };
         for (std::size_t i = 0; i < fill.size(); ++i) {
             const Triangle& t = fill[i];
-            if (!proper(t, facing)) return false;
+            if (!proper(t, facing) || repeats_a_face(t)) return false;
             for (int k = 0; k < 3; ++k)
                 if (!side(t[k], t[(k + 1) % 3]) && has_edge(t[k], t[(k + 1) % 3])) return false;
             for (std::size_t j = 0; j < i; ++j)
@@ -547,6 +550,28 @@ private:
             for (std::uint32_t f : it->second)
                 if (alive_[f]) faces.push_back(f);
         return faces;
+    }
+
+    // A standing face has t's three corners (the fill would make a duplicate).
+    bool repeats_a_face(const Triangle& t) const {
+        Triangle sorted = t;
+        std::sort(sorted.begin(), sorted.end());
+        for (std::uint32_t f : faces_of(t[0])) {
+            Triangle other = triangles_[f];
+            std::sort(other.begin(), other.end());
+            if (other == sorted) return true;
+        }
+        return false;
+    }
+
+    // A standing face holds a followed by b.
+    bool has_directed_edge(std::uint32_t a, std::uint32_t b) const {
+        for (std::uint32_t f : faces_of(a)) {
+            const Triangle& t = triangles_[f];
+            for (int k = 0; k < 3; ++k)
+                if (t[k] == a && t[(k + 1) % 3] == b) return true;
+        }
+        return false;
     }
 
     bool has_edge(std::uint32_t a, std::uint32_t b) const {
