@@ -166,8 +166,9 @@ private:
             live_pairs_[f] = partner_start_[f + 1] - partner_start_[f];
     }
 
-    // A corner of the pair goes: the first, by most pairs around it, whose hole can be filled
-    // facing its normals, then without that condition; else the first one's hole stays open.
+    // The pair goes by the first of D-32's steps that works (ALGORITHM.md): a flap at the border
+    // cut; a corner's fan removed and its hole filled (corners by most pairs around them, fills
+    // facing the normals first); a disc of fans removed and filled; one face cut.
     void resolve(const TrianglePair& p, FoldRemovalStats& stats) {
         std::vector<std::pair<std::size_t, std::uint32_t>> candidates; // (-pairs, vertex)
         for (std::uint32_t f : {p.first, p.second})
