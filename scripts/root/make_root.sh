@@ -10,9 +10,10 @@ HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 ROOT=$(cd "$HERE/../.." && pwd)
 SUITE=$1
 R="$ROOT/.deps/roots/$SUITE"
-# what the plugin and the host program build against, and xvfb for the GUI screenshots
+# what the plugin and the host program build against (GMP: the exact predicates of hrsr_core),
+# and xvfb for the GUI screenshots
 PACKAGES=(meshlab g++ cmake ninja-build make qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev
-          libglew-dev libeigen3-dev xz-utils dpkg-dev xvfb xauth xdotool imagemagick)
+          libglew-dev libeigen3-dev libgmp-dev xz-utils dpkg-dev xvfb xauth xdotool imagemagick)
 MARKER="${PACKAGES[*]} and the recommended libraries"  # changes when what is installed does
 source "$ROOT/scripts/debian_mirror.sh"
 export DEBIAN_FRONTEND=noninteractive
