@@ -105,6 +105,9 @@ public:
           alive_(triangles.size(), 1), seen_(triangles.size(), 0) {
         pairs_ = grid_.all_pairs(geometry_, exec);
         index_pairs();
+        for (std::uint32_t v = 0; v < representative_.size(); ++v)
+            if (representative_[v] != v) copies_[representative_[v]].push_back(v);
+        for (auto& [first, others] : copies_) others.push_back(first);
     }
 
     // Every pair, in order, while both its faces stand.
@@ -383,7 +386,7 @@ private:
                 double smallest = 4;
                 bool proper_split = true;
                 for (const Triangle& t : split_around(triangles_[f], r)) {
-                    proper_split = proper_split && proper(t, true);
+                    proper_split = proper_split && proper(t, true) && !repeats_a_face(t);
                     smallest = std::min(smallest, angle(t));
                 }
                 if (proper_split) candidates.emplace_back(-smallest, f);
@@ -554,15 +557,21 @@ private:
     }
 
     // A standing face has t's three corners (the fill would make a duplicate).
+    // Positions count, as in `hrsr check`: the faces around every copy of t's first corner.
     bool repeats_a_face(const Triangle& t) const {
-        Triangle sorted = t;
+        Triangle sorted = welded(t);
         std::sort(sorted.begin(), sorted.end());
-        for (std::uint32_t f : faces_of(t[0])) {
-            Triangle other = triangles_[f];
-            std::sort(other.begin(), other.end());
-            if (other == sorted) return true;
-        }
-        return false;
+        const auto repeats = [&](std::uint32_t corner) {
+            for (std::uint32_t f : faces_of(corner)) {
+                Triangle other = welded(triangles_[f]);
+                std::sort(other.begin(), other.end());
+                if (other == sorted) return true;
+            }
+            return false;
+        };
+        const auto copies = copies_.find(representative_[t[0]]);
+        if (copies == copies_.end()) return repeats(t[0]);
+        return std::any_of(copies->second.begin(), copies->second.end(), repeats);
     }
 
     // A standing face holds a followed by b.
@@ -605,6 +614,8 @@ private:
     const std::vector<Vec3>& normals_;
     std::vector<Triangle> triangles_; ///< by vertex; faces added at the end
     const std::vector<std::uint32_t> representative_;
+    /// Vertices at one position, by their representative (only where there are several).
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> copies_;
     TriangleGeometry geometry_; ///< the same faces, welded
     TriangleGrid grid_;         ///< new faces are filed again
     const VertexCorners at_;    ///< the given faces around each vertex
