@@ -518,8 +518,11 @@ private:
             if (!proper(t, facing) || repeats_a_face(t)) return false;
             for (int k = 0; k < 3; ++k)
                 if (!side(t[k], t[(k + 1) % 3]) && has_edge(t[k], t[(k + 1) % 3])) return false;
+            // Two corners of a hole may be copies of one point: no two new faces on the same
+            // positions either.
             for (std::size_t j = 0; j < i; ++j)
-                if (geometry_.intersect(welded(t), welded(fill[j]))) return false;
+                if (same_positions(t, fill[j]) || geometry_.intersect(welded(t), welded(fill[j])))
+                    return false;
             if (intersects_standing(welded(t))) return false; // blocker_ is set
         }
         return true;
@@ -557,6 +560,13 @@ private:
     }
 
     // A standing face has t's three corners (the fill would make a duplicate).
+    bool same_positions(const Triangle& a, const Triangle& b) const {
+        Triangle wa = welded(a), wb = welded(b);
+        std::sort(wa.begin(), wa.end());
+        std::sort(wb.begin(), wb.end());
+        return wa == wb;
+    }
+
     // Positions count, as in `hrsr check`: the faces around every copy of t's first corner.
     bool repeats_a_face(const Triangle& t) const {
         Triangle sorted = welded(t);
