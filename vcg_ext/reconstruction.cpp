@@ -54,23 +54,15 @@ struct CompactMesh {
 template <class Point>
 CompactMesh<Point> compact(std::size_t points, std::vector<Triangle> triangles) {
     CompactMesh<Point> m;
-    std::vector<std::uint32_t> vertex_of(points, ~0u), point_of_vertex;
-    for (const Triangle& t : triangles)
-        for (std::uint32_t p : t) vertex_of[p] = 0;
-    for (std::uint32_t p = 0; p < points; ++p) {
-        if (vertex_of[p] == ~0u) {
-            m.unused.push_back(Point(p));
-            continue;
-        }
-        vertex_of[p] = std::uint32_t(point_of_vertex.size());
-        point_of_vertex.push_back(p);
+    const std::vector<std::uint32_t> source = compact_and_split_vertices(points, triangles);
+    std::vector<std::uint8_t> used(points, 0);
+    for (std::uint32_t p : source) {
+        m.copies += used[p];
+        used[p] = 1;
     }
-    for (Triangle& t : triangles)
-        for (std::uint32_t& p : t) p = vertex_of[p];
-    const std::vector<std::uint32_t> copies_of =
-        split_non_manifold_vertices(point_of_vertex.size(), triangles);
-    m.copies = copies_of.size() - point_of_vertex.size();
-    for (std::uint32_t v : copies_of) m.vertex_point.push_back(Point(point_of_vertex[v]));
+    for (std::uint32_t p = 0; p < points; ++p)
+        if (!used[p]) m.unused.push_back(Point(p));
+    for (std::uint32_t p : source) m.vertex_point.push_back(Point(p));
     m.triangles = std::move(triangles);
     return m;
 }
@@ -151,7 +143,7 @@ void remove_output_folds(const PointSet& input, const Execution& exec, Reconstru
     }
     FoldRemoval removal = remove_folds(written, mesh.vertex_normals, mesh.triangles, exec);
     report.fold_removal = removal.stats;
-    if (removal.stats.vertices_removed == 0 && removal.stats.faces_cut == 0) return;
+    if (removal.stats.pairs_before == 0) return; // nothing changed
     std::vector<std::uint8_t> was_vertex(input.size(), 0), is_vertex(input.size(), 0);
     for (std::uint32_t i : mesh.vertex_input_index) was_vertex[i] = 1;
     Reconstruction out;

@@ -63,4 +63,21 @@ std::vector<std::uint32_t> split_non_manifold_vertices(std::size_t n,
     return source;
 }
 
+std::vector<std::uint32_t> compact_and_split_vertices(std::size_t vertex_count,
+                                                      std::vector<Triangle>& triangles) {
+    std::vector<std::uint32_t> vertex_of(vertex_count, ~0u), used;
+    for (const Triangle& t : triangles)
+        for (std::uint32_t v : t) vertex_of[v] = 0;
+    for (std::uint32_t v = 0; v < vertex_count; ++v)
+        if (vertex_of[v] == 0) {
+            vertex_of[v] = std::uint32_t(used.size());
+            used.push_back(v);
+        }
+    for (Triangle& t : triangles)
+        for (std::uint32_t& v : t) v = vertex_of[v];
+    std::vector<std::uint32_t> source = split_non_manifold_vertices(used.size(), triangles);
+    for (std::uint32_t& v : source) v = used[v];
+    return source;
+}
+
 } // namespace hrsr

@@ -24,4 +24,10 @@ Fans compute_fans(std::size_t vertex_count, const std::vector<Triangle>& triangl
 std::vector<std::uint32_t> split_non_manifold_vertices(std::size_t vertex_count,
                                                        std::vector<Triangle>& triangles);
 
+/// The vertices `triangles` use (of `vertex_count`), renumbered in index order, then split as
+/// above: `triangles` is rewritten over the result. Returns, for every vertex of the result, the
+/// vertex of the given numbering it stands for (copies share it); unused vertices are left out.
+std::vector<std::uint32_t> compact_and_split_vertices(std::size_t vertex_count,
+                                                      std::vector<Triangle>& triangles);
+
 } // namespace hrsr

@@ -128,23 +128,14 @@ public:
         triangles.clear();
         for (std::size_t f = 0; f < triangles_.size(); ++f)
             if (alive_[f]) triangles.push_back(triangles_[f]);
-        std::vector<std::uint32_t> vertex_of(positions_.size(), ~0u), source;
-        for (const Triangle& t : triangles)
-            for (std::uint32_t v : t) vertex_of[v] = 0;
-        for (std::uint32_t v = 0; v < positions_.size(); ++v)
-            if (vertex_of[v] == 0) {
-                vertex_of[v] = std::uint32_t(source.size());
-                source.push_back(v);
-            }
-        for (Triangle& t : triangles)
-            for (std::uint32_t& v : t) v = vertex_of[v];
-        const std::vector<std::uint32_t> copies_of =
-            split_non_manifold_vertices(source.size(), triangles);
         FoldRemoval out;
-        stats.vertex_copies = copies_of.size() - source.size();
+        out.vertex_source = compact_and_split_vertices(positions_.size(), triangles);
+        std::vector<std::uint8_t> seen(positions_.size(), 0);
+        for (std::uint32_t v : out.vertex_source) {
+            stats.vertex_copies += seen[v];
+            seen[v] = 1;
+        }
         out.stats = stats;
-        out.vertex_source.reserve(copies_of.size());
-        for (std::uint32_t v : copies_of) out.vertex_source.push_back(source[v]);
         return out;
     }
 
@@ -243,9 +234,7 @@ private:
             for (std::uint32_t f : faces) alive_[f] = 1;
             if (!border) return 0;
             if (fill) {
-                for (std::uint32_t f : faces) retire(f);
-                for (const Triangle& t : *fill) add(t);
-                reinserted_ += reinsert(border->inner, border->hole.corners);
+                replace(faces, *fill, border->inner, border->hole.corners);
                 return border->inner.size();
             }
             region.push_back(nearest_corner(border->hole.corners, region));
@@ -361,10 +350,18 @@ private:
         const std::optional<std::vector<Triangle>> fill = first_fitting_fill(*hole, facing);
         for (std::uint32_t f : fan) alive_[f] = 1;
         if (!fill) return false;
-        for (std::uint32_t f : fan) retire(f);
-        for (const Triangle& t : *fill) add(t);
-        reinserted_ += reinsert({v}, hole->corners);
+        replace(fan, *fill, {v}, hole->corners);
         return true;
+    }
+
+    // `fill` stands instead of `faces`; the `removed` vertices go back where they fit around
+    // the hole's `corners`.
+    void replace(const std::vector<std::uint32_t>& faces, const std::vector<Triangle>& fill,
+                 const std::vector<std::uint32_t>& removed,
+                 const std::vector<std::uint32_t>& corners) {
+        for (std::uint32_t f : faces) retire(f);
+        for (const Triangle& t : fill) add(t);
+        reinserted_ += reinsert(removed, corners);
     }
 
     // Puts removed vertices back where they fit into a face around the hole's `corners` (the
@@ -559,7 +556,19 @@ private:
         return faces;
     }
 
-    // A standing face has t's three corners (the fill would make a duplicate).
+    // Whether `test` holds for a standing face of v (faces_of without the list: the edge and
+    // duplicate tests run inside the fills' search).
+    template <class Test>
+    bool any_face(std::uint32_t v, Test&& test) const {
+        for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
+            if (alive_[at_.corner[e] / 3] && test(triangles_[at_.corner[e] / 3])) return true;
+        const auto it = added_at_.find(v);
+        if (it == added_at_.end()) return false;
+        return std::any_of(it->second.begin(), it->second.end(),
+                           [&](std::uint32_t f) { return alive_[f] && test(triangles_[f]); });
+    }
+
+    // Whether a and b are the same triangle of positions.
     bool same_positions(const Triangle& a, const Triangle& b) const {
         Triangle wa = welded(a), wb = welded(b);
         std::sort(wa.begin(), wa.end());
@@ -567,17 +576,12 @@ private:
         return wa == wb;
     }
 
-    // Positions count, as in `hrsr check`: the faces around every copy of t's first corner.
+    // A standing face has t's three corners (the fill would make a duplicate). Positions
+    // count, as in `hrsr check`: the faces around every copy of t's first corner.
     bool repeats_a_face(const Triangle& t) const {
-        Triangle sorted = welded(t);
-        std::sort(sorted.begin(), sorted.end());
         const auto repeats = [&](std::uint32_t corner) {
-            for (std::uint32_t f : faces_of(corner)) {
-                Triangle other = welded(triangles_[f]);
-                std::sort(other.begin(), other.end());
-                if (other == sorted) return true;
-            }
-            return false;
+            return any_face(corner,
+                            [&](const Triangle& other) { return same_positions(t, other); });
         };
         const auto copies = copies_.find(representative_[t[0]]);
         if (copies == copies_.end()) return repeats(t[0]);
@@ -586,19 +590,16 @@ private:
 
     // A standing face holds a followed by b.
     bool has_directed_edge(std::uint32_t a, std::uint32_t b) const {
-        for (std::uint32_t f : faces_of(a)) {
-            const Triangle& t = triangles_[f];
+        return any_face(a, [&](const Triangle& t) {
             for (int k = 0; k < 3; ++k)
                 if (t[k] == a && t[(k + 1) % 3] == b) return true;
-        }
-        return false;
+            return false;
+        });
     }
 
     bool has_edge(std::uint32_t a, std::uint32_t b) const {
-        for (std::uint32_t f : faces_of(a))
-            if (std::find(triangles_[f].begin(), triangles_[f].end(), b) != triangles_[f].end())
-                return true;
-        return false;
+        return any_face(
+            a, [&](const Triangle& t) { return std::find(t.begin(), t.end(), b) != t.end(); });
     }
 
     // A face leaves the mesh: the pairs it was in are gone.
