@@ -111,28 +111,9 @@ Reconstruction make_output(const PreparedCloud& cloud,
     return mesh;
 }
 
-// D-26 on the finished mesh, in the normalised coordinates everything else uses (D-2): at an
-// offset of 1e12 the input's own are too coarse for a triangle test, and the same cloud moved or
-// scaled must give the same mesh.
-void repair_output_folds(const PreparedCloud& cloud,
-                         const IndexVector<VertexIndex, PointIndex>& vertex_point, int rounds,
-                         const Execution& exec, Reconstruction& mesh,
-                         ReconstructionReport& report) {
-    if (rounds <= 0) return;
-    if (exec.progress) exec.progress->begin("fold repair");
-    Timer timer(report.timings, "fold repair");
-    std::vector<Vec3> positions;
-    positions.reserve(vertex_point.size());
-    for (PointIndex p : vertex_point) positions.push_back(cloud.positions[p.value()]);
-    report.fold_repair = repair_folds(positions, mesh.triangles, rounds, exec);
-}
-
-// D-32 on the coordinates as the writers store them (the input's, at its precision): what the
-// flips left is cut out, so that the written mesh has no intersecting pair. Points whose every
-// vertex went are "dropped: fold".
-void remove_output_folds(const PointSet& input, const Execution& exec, Reconstruction& mesh,
-                         ReconstructionReport& report) {
-    Timer timer(report.timings, "fold removal");
+// The coordinates as the writers store them: the input's, at its precision. D-26 and D-32 test
+// intersections there (exactly), so that what they leave is what a user's check finds.
+std::vector<Vec3> written_positions(const PointSet& input, const Reconstruction& mesh) {
     std::vector<Vec3> written;
     written.reserve(mesh.vertex_input_index.size());
     for (std::uint32_t i : mesh.vertex_input_index) {
@@ -141,7 +122,13 @@ void remove_output_folds(const PointSet& input, const Execution& exec, Reconstru
             for (int k = 0; k < 3; ++k) p[k] = double(float(p[k]));
         written.push_back(p);
     }
-    FoldRemoval removal = remove_folds(written, mesh.vertex_normals, mesh.triangles, exec);
+    return written;
+}
+
+// D-32's result as the output: vertices without a face go (their points are "dropped: fold"),
+// copies of pinched vertices are appended.
+void take_fold_removal(const PointSet& input, FoldRemoval& removal, Reconstruction& mesh,
+                       ReconstructionReport& report) {
     report.fold_removal = removal.stats;
     if (removal.stats.pairs_before == 0) return; // nothing changed
     std::vector<std::uint8_t> was_vertex(input.size(), 0), is_vertex(input.size(), 0);
@@ -160,14 +147,21 @@ void remove_output_folds(const PointSet& input, const Execution& exec, Reconstru
     report.mesh = measure_mesh(mesh.vertex_input_index.size(), mesh.triangles);
 }
 
-// The fold repair (D-26's flips, then D-32's removal); rounds = 0 turns both off.
-void repair_and_remove_folds(const PointSet& input, const PreparedCloud& cloud,
-                             const IndexVector<VertexIndex, PointIndex>& vertex_point, int rounds,
-                             const Execution& exec, Reconstruction& mesh,
-                             ReconstructionReport& report) {
-    if (rounds <= 0) return;
-    repair_output_folds(cloud, vertex_point, rounds, exec, mesh, report);
-    remove_output_folds(input, exec, mesh, report);
+// The fold repair on the finished mesh, on the coordinates as written: one search for the
+// intersecting pairs, D-26's flips, then D-32 cuts out what they left, so that the written mesh
+// has no intersecting pair. rounds = 0 turns both off.
+void repair_and_remove_folds(const PointSet& input, int rounds, const Execution& exec,
+                             Reconstruction& mesh, ReconstructionReport& report) {
+    if (rounds <= 0 || mesh.triangles.size() < 2) return;
+    if (exec.progress) exec.progress->begin("fold repair");
+    const std::vector<Vec3> written = written_positions(input, mesh);
+    std::optional<Timer> timer(std::in_place, report.timings, "fold search");
+    FoldSearch search(written, mesh.triangles, exec);
+    timer.emplace(report.timings, "fold repair");
+    report.fold_repair = repair_folds(search, mesh.triangles, rounds);
+    timer.emplace(report.timings, "fold removal");
+    FoldRemoval removal = remove_folds(search, mesh.vertex_normals, mesh.triangles);
+    take_fold_removal(input, removal, mesh, report);
 }
 
 // A phase boundary: progress, and the chance to cancel before the phase's work.
@@ -304,8 +298,7 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     Reconstruction mesh =
         make_output(cloud, m.vertex_point, std::move(m.triangles), options.orient_outward, report);
     assembly.reset();
-    repair_and_remove_folds(input, cloud, m.vertex_point, options.fold_repair_rounds, exec, mesh,
-                            report);
+    repair_and_remove_folds(input, options.fold_repair_rounds, exec, mesh, report);
     account(input, mesh, report);
     require_triangles(mesh, report);
     return mesh;
@@ -395,8 +388,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles),
                                       options.rsr.orient_outward, report);
     assembly.reset();
-    repair_and_remove_folds(input, cloud, vertex_point, options.rsr.fold_repair_rounds, exec, mesh,
-                            report);
+    repair_and_remove_folds(input, options.rsr.fold_repair_rounds, exec, mesh, report);
     account(input, mesh, report);
     require_triangles(mesh, report);
     return mesh;

@@ -45,6 +45,19 @@ void expect_same_topology(const MeshStats& a, const MeshStats& b) {
     EXPECT_EQ(b.inconsistently_oriented_edges, 0u);
 }
 
+// One search serves D-26 and D-32: after the flips its pairs are exactly those a new search of
+// the repaired mesh finds, so D-32 needs none of its own.
+TEST(FoldRepair, TheSharedSearchEndsWithExactlyThePairsLeft) {
+    const Output plain = reconstruct_owl(0);
+    std::vector<Triangle> repaired = plain.triangles;
+    FoldSearch search(plain.positions, repaired, {});
+    ASSERT_GT(search.pairs.size(), 0u) << "the sample no longer has a fold to repair";
+    const FoldRepairStats stats = repair_folds(search, repaired, 2);
+    EXPECT_GT(stats.flips, 0u);
+    EXPECT_EQ(search.pairs, self_intersecting_pairs(plain.positions, repaired, {}));
+    EXPECT_EQ(stats.pairs_after, search.pairs.size());
+}
+
 // The shipped owl's HRsR mesh has folds (15 intersecting pairs when this test was written).
 TEST(FoldRepair, FewerIntersectionsSameVerticesAndTopology) {
     const Output plain = reconstruct_owl(0);

@@ -2,7 +2,6 @@
 
 #include "mesh/fans.h"
 #include "mesh/triangle_grid.h"
-#include "mesh/welding.h"
 
 #include <algorithm>
 #include <array>
@@ -96,14 +95,13 @@ struct DiscBorder {
 
 class Remover {
 public:
-    Remover(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
-            const std::vector<Triangle>& triangles, const Execution& exec)
-        : positions_(positions), normals_(normals), triangles_(triangles),
-          representative_(same_position_representatives(positions)),
-          geometry_(positions, welded_triangles(triangles, representative_)),
-          grid_(geometry_, exec), at_(corners_by_vertex(positions.size(), triangles)),
-          alive_(triangles.size(), 1), seen_(triangles.size(), 0) {
-        pairs_ = grid_.all_pairs(geometry_, exec);
+    // `search` holds the pairs left on the mesh `triangles` and the grid that found them.
+    Remover(FoldSearch& search, const std::vector<Vec3>& normals,
+            const std::vector<Triangle>& triangles)
+        : positions_(search.positions), normals_(normals), triangles_(triangles),
+          representative_(search.representative), geometry_(search.geometry), grid_(search.grid),
+          at_(corners_by_vertex(positions_.size(), triangles)), alive_(triangles.size(), 1),
+          pairs_(search.pairs), seen_(triangles.size(), 0) {
         index_pairs();
         for (std::uint32_t v = 0; v < representative_.size(); ++v)
             if (representative_[v] != v) copies_[representative_[v]].push_back(v);
@@ -450,6 +448,7 @@ private:
         const auto diagonal_free = [&](std::size_t i, std::size_t j) {
             return j == i + 1 || (i == 0 && j == m - 1) || !has_edge(c[i], c[j]);
         };
+        if (avoid_crossings) gather_standing(hole);
         std::vector<double> best(m * m, -1);
         std::vector<std::size_t> apex(m * m, 0);
         for (std::size_t i = 0; i + 1 < m; ++i) best[i * m + i + 1] = 4; // above any angle
@@ -461,10 +460,12 @@ private:
                     const Triangle t{c[i], c[k], c[j]};
                     const double sub = std::min(best[i * m + k], best[k * m + j]);
                     if (sub <= best[i * m + j] || sub <= 0) continue; // cannot do better
-                    const bool usable = proper(t, facing) && !repeats_a_face(t) &&
-                                        (!avoid_crossings || !intersects_standing(welded(t)));
-                    const double q = std::min(sub, usable ? angle(t) : -1.0);
-                    if (q > best[i * m + j]) {
+                    // The angle first: the tests, the intersection one above all, only for a
+                    // triangle that would improve the fill.
+                    const double q = std::min(sub, angle(t));
+                    if (q <= best[i * m + j]) continue;
+                    if (proper(t, facing) && !repeats_a_face(t) &&
+                        (!avoid_crossings || !intersects_gathered(welded(t)))) {
                         best[i * m + j] = q;
                         apex[i * m + j] = k;
                     }
@@ -538,6 +539,34 @@ private:
                 return true;
             }
         }
+        return false;
+    }
+
+    // The standing faces near the hole, each once with its box: every triangle over the hole's
+    // corners lies in their box, so one grid search serves all the fills' tests.
+    void gather_standing(const Hole& hole) {
+        Box box{positions_[hole.corners.front()], positions_[hole.corners.front()]};
+        for (std::uint32_t c : hole.corners) box.add(positions_[c]);
+        near_.clear();
+        grid_.query(box, near_);
+        ++search_;
+        gathered_.clear();
+        for (std::uint32_t f : near_) {
+            if (seen_[f] == search_ || !alive_[f]) continue;
+            seen_[f] = search_;
+            const Box b = geometry_.box(geometry_.triangle(f));
+            if (b.overlaps(box)) gathered_.emplace_back(f, b);
+        }
+    }
+
+    // intersects_standing() among the gathered faces (t over the hole's corners).
+    bool intersects_gathered(const Triangle& t) {
+        const Box box = geometry_.box(t);
+        for (const auto& [f, b] : gathered_)
+            if (box.overlaps(b) && geometry_.intersect_unboxed(t, geometry_.triangle(f))) {
+                blocker_ = f;
+                return true;
+            }
         return false;
     }
 
@@ -624,23 +653,32 @@ private:
     const std::vector<Vec3>& positions_;
     const std::vector<Vec3>& normals_;
     std::vector<Triangle> triangles_; ///< by vertex; faces added at the end
-    const std::vector<std::uint32_t> representative_;
+    const std::vector<std::uint32_t>& representative_;
     /// Vertices at one position, by their representative (only where there are several).
     std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> copies_;
-    TriangleGeometry geometry_; ///< the same faces, welded
-    TriangleGrid grid_;         ///< new faces are filed again
-    const VertexCorners at_;    ///< the given faces around each vertex
+    TriangleGeometry& geometry_; ///< the same faces, welded; new ones appended
+    TriangleGrid& grid_;         ///< new faces are filed again
+    const VertexCorners at_;     ///< the given faces around each vertex
     std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> added_at_;
     std::vector<std::uint8_t> alive_;
-    std::vector<TrianglePair> pairs_;
+    const std::vector<TrianglePair>& pairs_;
     std::vector<std::uint32_t> partner_start_, partner_, live_pairs_;
     std::vector<std::uint32_t> near_, seen_; ///< seen_: the last search that met the face
+    std::vector<std::pair<std::uint32_t, Box>> gathered_; ///< gather_standing()'s faces
     std::uint32_t search_ = 0;
     std::uint32_t blocker_ = kNoFace; ///< the standing face that the last fill crossed
     std::size_t reinserted_ = 0;      ///< removed vertices put back (reinsert)
 };
 
 } // namespace
+
+FoldRemoval remove_folds(FoldSearch& search, const std::vector<Vec3>& normals,
+                         std::vector<Triangle>& triangles) {
+    Remover remover(search, normals, triangles);
+    FoldRemovalStats stats;
+    remover.run(stats);
+    return remover.result(triangles, stats);
+}
 
 FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
                          std::vector<Triangle>& triangles, const Execution& exec) {
@@ -649,10 +687,8 @@ FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<V
         for (std::uint32_t v = 0; v < positions.size(); ++v) out.vertex_source.push_back(v);
         return out;
     }
-    Remover remover(positions, normals, triangles, exec);
-    FoldRemovalStats stats;
-    remover.run(stats);
-    return remover.result(triangles, stats);
+    FoldSearch search(positions, triangles, exec);
+    return remove_folds(search, normals, triangles);
 }
 
 } // namespace hrsr

@@ -2,6 +2,7 @@
 // could not undo are cut out, vertex by vertex.
 #pragma once
 
+#include "mesh/fold_search.h"
 #include "mesh/triangle_mesh.h"
 #include "parallel.h"
 #include "point_set.h"
@@ -35,5 +36,10 @@ struct FoldRemoval {
 /// is rewritten over the result's vertices: kept faces in their order, then the new ones.
 FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
                          std::vector<Triangle>& triangles, const Execution& exec);
+
+/// The same on pairs already found (after repair_folds() on the same search, its pairs left):
+/// `search` must be built over `triangles` as they are now. New faces are added to it.
+FoldRemoval remove_folds(FoldSearch& search, const std::vector<Vec3>& normals,
+                         std::vector<Triangle>& triangles);
 
 } // namespace hrsr

@@ -2,12 +2,11 @@
 
 #include "index_types.h"
 #include "mesh/split_mesh.h"
-#include "mesh/triangle_grid.h"
-#include "mesh/welding.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -138,9 +137,9 @@ public:
         : region_(region), mesh_(region.mesh()), representative_(representative),
           geometry_(geometry), grid_(grid), seen_in_search_(geometry.size(), 0) {}
 
-    // From the pairs found by the grid: flips, round by round; `stats` gets the flips, the
-    // rounds and the pairs left.
-    void run(std::vector<TrianglePair> pairs, int rounds, FoldRepairStats& stats) {
+    // From the pairs found by the grid: flips, round by round; `pairs` ends as the pairs left,
+    // `stats` gets the flips, the rounds and their number.
+    void run(std::vector<TrianglePair>& pairs, int rounds, FoldRepairStats& stats) {
         // A pair that found no flip is tried again only once a face around it has changed.
         std::vector<int> flipped_in_round(geometry_.size(), -1);
         // A flip changes only faces that held its four corners, so a change around a pair shows
@@ -221,13 +220,15 @@ private:
     }
 
     // Intersections of `t` with the faces of the last near() search (none for a degenerate t,
-    // which the pair test does not take, as `hrsr check` skips it).
-    std::size_t intersections_near(const Triangle& t) const {
+    // which the pair test does not take, as `hrsr check` skips it), counted up to `limit`.
+    // Faces `skip_a` and `skip_b` are not counted.
+    std::size_t intersections_near(const Triangle& t, std::uint32_t skip_a, std::uint32_t skip_b,
+                                   std::size_t limit) const {
         if (geometry_.degenerate(t)) return 0;
         const Box box = geometry_.box(t);
         std::size_t count = 0;
-        for (std::size_t i = 0; i < near_.size(); ++i)
-            if (box.overlaps(near_box_[i]) &&
+        for (std::size_t i = 0; i < near_.size() && count < limit; ++i)
+            if (near_[i] != skip_a && near_[i] != skip_b && box.overlaps(near_box_[i]) &&
                 geometry_.intersect_unboxed(t, geometry_.triangle(near_[i])))
                 ++count;
         return count;
@@ -256,11 +257,27 @@ private:
         return around_;
     }
 
+    // The box of f and the corners across its edges: every quad a flip of f's edges replaces.
+    Box quads_box(SFace* face) const {
+        Box box{geometry_.position(representative_[region_.global_vertex(face, 0)].value()),
+                geometry_.position(representative_[region_.global_vertex(face, 0)].value())};
+        for (int z = 0; z < 3; ++z) {
+            box.add(geometry_.position(representative_[region_.global_vertex(face, z)].value()));
+            const SFace* across = face->FFp(z);
+            if (across != face)
+                box.add(geometry_.position(
+                    representative_[region_.global_vertex(across, (face->FFi(z) + 2) % 3)]
+                        .value()));
+        }
+        return box;
+    }
+
     // Flips the first edge of face f whose flip lowers the intersections of its two faces;
     // returns the other face of that edge, or kNoFace. Faces flipped this round stay as they are.
     std::uint32_t try_flips(std::uint32_t f, const std::vector<std::uint8_t>& waiting) {
         SFace* face = region_.face(FaceIndex(f));
         if (!face) return kNoFace;
+        bool searched = false; // near() once for the three edges' quads
         for (int z = 0; z < 3; ++z) {
             SFace* across = face->FFp(z);
             if (across == face) continue; // a border edge
@@ -282,12 +299,18 @@ private:
             if (geometry_.degenerate(nf) || geometry_.degenerate(ng)) continue;
             const double old_fold = geometry_.normal(tf).dot(geometry_.normal(tg));
             if (geometry_.normal(nf).dot(geometry_.normal(ng)) < std::min(old_fold, 0.0)) continue;
-            Box quad = geometry_.box(tf);
-            quad.add(geometry_.position(y));
-            near(quad, f, g);
-            const std::size_t before = intersections_near(tf) + intersections_near(tg);
-            const std::size_t after = intersections_near(nf) + intersections_near(ng);
-            if (after >= before) continue;
+            if (!searched) {
+                near(quads_box(face), kNoFace, kNoFace);
+                searched = true;
+            }
+            const std::size_t all = std::numeric_limits<std::size_t>::max();
+            const std::size_t before =
+                intersections_near(tf, f, g, all) + intersections_near(tg, f, g, all);
+            // Counted only as far as it matters: most candidates do not lower the count.
+            const std::size_t after_nf = intersections_near(nf, f, g, before);
+            if (after_nf >= before ||
+                after_nf + intersections_near(ng, f, g, before - after_nf) >= before)
+                continue;
             mesh_.flip(face, z);
             // vcglib's FlipEdge rewrites both faces; read their corners back.
             for (std::uint32_t h : {f, g}) {
@@ -340,20 +363,22 @@ private:
 
 } // namespace
 
+FoldRepairStats repair_folds(FoldSearch& search, std::vector<Triangle>& triangles, int rounds) {
+    FoldRepairStats stats;
+    stats.pairs_before = stats.pairs_after = search.pairs.size();
+    if (search.pairs.empty() || rounds <= 0) return stats;
+    Region region(search.positions, triangles, search.pairs, kRegionRings);
+    Repair(region, search.representative, search.geometry, search.grid)
+        .run(search.pairs, rounds, stats);
+    if (stats.flips > 0) region.write_back(triangles); // flips keep every face in its slot
+    return stats;
+}
+
 FoldRepairStats repair_folds(const std::vector<Vec3>& positions, std::vector<Triangle>& triangles,
                              int rounds, const Execution& exec) {
     if (triangles.size() < 2 || rounds <= 0) return {};
-    const std::vector<std::uint32_t> representative = same_position_representatives(positions);
-    TriangleGeometry geometry(positions, welded_triangles(triangles, representative));
-    TriangleGrid grid(geometry, exec);
-    FoldRepairStats stats;
-    std::vector<TrianglePair> pairs = grid.all_pairs(geometry, exec);
-    stats.pairs_before = stats.pairs_after = pairs.size();
-    if (pairs.empty()) return stats;
-    Region region(positions, triangles, pairs, kRegionRings);
-    Repair(region, representative, geometry, grid).run(std::move(pairs), rounds, stats);
-    if (stats.flips > 0) region.write_back(triangles); // flips keep every face in its slot
-    return stats;
+    FoldSearch search(positions, triangles, exec);
+    return repair_folds(search, triangles, rounds);
 }
 
 } // namespace hrsr

@@ -1,6 +1,7 @@
 // Edge flips that undo folds: intersecting triangle pairs in a reconstruction (deviation D-26).
 #pragma once
 
+#include "mesh/fold_search.h"
 #include "mesh/triangle_mesh.h"
 #include "parallel.h"
 #include "point_set.h"
@@ -26,5 +27,9 @@ namespace hrsr {
 /// genus.
 FoldRepairStats repair_folds(const std::vector<Vec3>& positions, std::vector<Triangle>& triangles,
                              int rounds, const Execution& exec);
+
+/// The same on pairs already found: `search` (built over `triangles`) follows the flips, and its
+/// pairs end as the pairs left, ready for remove_folds().
+FoldRepairStats repair_folds(FoldSearch& search, std::vector<Triangle>& triangles, int rounds);
 
 } // namespace hrsr
