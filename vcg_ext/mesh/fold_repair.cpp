@@ -135,7 +135,8 @@ public:
     Repair(Region& region, const std::vector<std::uint32_t>& representative,
            TriangleGeometry& geometry, TriangleGrid& grid)
         : region_(region), mesh_(region.mesh()), representative_(representative),
-          geometry_(geometry), grid_(grid), seen_in_search_(geometry.size(), 0) {}
+          geometry_(geometry), grid_(grid), seen_in_search_(geometry.size(), 0),
+          count_(geometry.size(), 0), counted_at_(geometry.size(), 0) {}
 
     // From the pairs found by the grid: flips, round by round; `pairs` ends as the pairs left,
     // `stats` gets the flips, the rounds and their number.
@@ -257,6 +258,17 @@ private:
         return around_;
     }
 
+    // How many faces intersect face h, from the last near() search (which must hold every face
+    // near h); remembered until the next flip, since most candidates share their faces.
+    std::size_t intersections_of(std::uint32_t h) {
+        if (counted_at_[h] != flips_made_ + 1) {
+            count_[h] = std::uint32_t(intersections_near(geometry_.triangle(h), h, kNoFace,
+                                                         std::numeric_limits<std::size_t>::max()));
+            counted_at_[h] = flips_made_ + 1;
+        }
+        return count_[h];
+    }
+
     // The box of f and the corners across its edges: every quad a flip of f's edges replaces.
     Box quads_box(SFace* face) const {
         Box box{geometry_.position(representative_[region_.global_vertex(face, 0)].value()),
@@ -303,15 +315,16 @@ private:
                 near(quads_box(face), kNoFace, kNoFace);
                 searched = true;
             }
-            const std::size_t all = std::numeric_limits<std::size_t>::max();
-            const std::size_t before =
-                intersections_near(tf, f, g, all) + intersections_near(tg, f, g, all);
+            // Neither face counts the other (they share the edge; they meet only folded flat).
+            const std::size_t each_other = geometry_.intersect_unboxed(tf, tg) ? 2 : 0;
+            const std::size_t before = intersections_of(f) + intersections_of(g) - each_other;
             // Counted only as far as it matters: most candidates do not lower the count.
             const std::size_t after_nf = intersections_near(nf, f, g, before);
             if (after_nf >= before ||
                 after_nf + intersections_near(ng, f, g, before - after_nf) >= before)
                 continue;
             mesh_.flip(face, z);
+            ++flips_made_;
             // vcglib's FlipEdge rewrites both faces; read their corners back.
             for (std::uint32_t h : {f, g}) {
                 const SFace* s = region_.face(FaceIndex(h));
@@ -358,6 +371,9 @@ private:
     std::vector<std::uint32_t> seen_in_search_; ///< per face: the last search that listed it
     std::uint32_t search_ = 0;
     std::vector<std::uint8_t> intersecting_; ///< per face: in a pair at the start of the round
+    /// intersections_of()'s counts, valid where counted_at_ is flips_made_ + 1.
+    std::vector<std::uint32_t> count_, counted_at_;
+    std::uint32_t flips_made_ = 0;
     Star star_;
 };
 
