@@ -12,10 +12,8 @@
 #include "errors.h"
 #include "io/mesh_reader.h"
 #include "io/ply_writer.h"
-#include "mesh/vcg_mesh.h"
+#include "mesh_samples.h"
 #include "samplers.h"
-
-#include <vcg/complex/algorithms/point_sampling.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -23,21 +21,6 @@
 #include <vector>
 
 namespace {
-
-/// Keeps each sample's position and the normal of the triangle it lies on.
-class NormalSampler {
-public:
-    using MeshType = hrsr::VcgMesh;
-    std::vector<hrsr::Vec3> positions, normals;
-
-    void AddFace(const hrsr::VcgFace& f, const hrsr::Vec3& b) {
-        positions.push_back(f.cP(0) * b[0] + f.cP(1) * b[1] + f.cP(2) * b[2]);
-        normals.push_back(f.cN());
-    }
-    void AddVert(const hrsr::VcgVertex&) {}
-    void AddEdge(const hrsr::VcgMesh::EdgeType&, double) {}
-    void AddTextureSample(const hrsr::VcgFace&, const hrsr::Vec3&, const vcg::Point2i&, float) {}
-};
 
 int usage() {
     std::fprintf(stderr, "usage: bench_points vertices MESH.ply OUT.ply | "
@@ -53,16 +36,8 @@ void write_vertices(const std::string& in, const std::string& out) {
 }
 
 void write_samples(const std::string& in, std::size_t n, const std::string& out, unsigned seed) {
-    const hrsr::io::MeshFile file = hrsr::io::read_mesh(in);
-    if (file.triangles.empty()) throw hrsr::InvalidInput(in + ": the mesh has no triangles");
-    hrsr::VcgMesh m;
-    hrsr::build_vcg_mesh(file.points.positions, {}, file.triangles, m);
-    using Sampling = vcg::tri::SurfaceSampling<hrsr::VcgMesh, NormalSampler>;
-    Sampling::SamplingRandomGenerator().initialize(seed);
-    NormalSampler sampler;
-    Sampling::Montecarlo(m, sampler, int(n));
-    hrsr::io::write_ply(out, sampler.positions, sampler.normals, {},
-                        hrsr::CoordinatePrecision::Float);
+    const hrsr::PointSet s = hrsr::testing::sample_mesh_surface(in, n, seed);
+    hrsr::io::write_ply(out, s.positions, s.normals, {}, hrsr::CoordinatePrecision::Float);
 }
 
 hrsr::PointSet surface_points(const std::string& shape, std::size_t n,
