@@ -77,6 +77,21 @@ TEST(Collapse, StopsCleanlyWhenNoValidEdgeIsLeft) {
     EXPECT_EQ(c.survivors.size(), 2u);
 }
 
+TEST(Collapse, AnInheritedEdgeIsNotCheckedAgain) {
+    // A–C is never linked (normals > 90° apart); A and B merge first (the shortest edge), and
+    // the merged node inherits B–C although its normal is now > 90° from C's: as in GEL, the
+    // rule holds for the graph as built only (D-15 withdrawn), so C merges too.
+    PointSet s;
+    s.positions = {{0, 0, 0}, {1, 0, 0}, {2.5, 0, 0}};
+    s.normals = {{0, 0, 1}, {1, 0, 0}, Vec3(0.1, 0, -1).Normalize()};
+    const CollapsedCloud c = run(s, 1.0 / 3.0);
+    EXPECT_FALSE(c.ran_out_of_edges);
+    ASSERT_EQ(c.records.size(), 2u);
+    EXPECT_EQ(c.records[0].latent, 1u); // A–B first
+    EXPECT_EQ(c.records[1].latent, 2u);
+    expect_collapse_invariants(s, c);
+}
+
 TEST(Collapse, NeverMergesOppositeNormals) {
     // Two parallel sheets with opposite normals, closer than their own spacing.
     PointSet s = testing::sample_plane(30, 1.0, 5);
