@@ -64,25 +64,26 @@ private:
     // §6.1: tangent distance times the merged weight, in both distance modes. The > 90° rule
     // holds for the graph as built (D-14); an edge inherited through a merge is not checked
     // again (D-15, withdrawn: checking it made the bunny, the lion and the dragon sample worse).
-    bool admissible_key(std::uint32_t a, std::uint32_t b, EdgeKey& key) const {
+    EdgeKey edge_key(std::uint32_t a, std::uint32_t b) const {
         const std::uint32_t lo = std::min(a, b), hi = std::max(a, b);
-        key = {tangent_distance(x_[hi] - x_[lo], n_[lo], n_[hi]) * double(w_[lo] + w_[hi]), lo, hi};
-        return true;
+        return {tangent_distance(x_[hi] - x_[lo], n_[lo], n_[hi]) * double(w_[lo] + w_[hi]), lo,
+                hi};
     }
 
-    // The node's smallest admissible edge; false if it has none.
+    // The node's smallest edge; false if it has none.
     bool best_edge(std::uint32_t i, EdgeKey& best) const {
         bool found = false;
-        EdgeKey key;
-        for (std::uint32_t j : neighbours_[i])
-            if (admissible_key(i, j, key) && (!found || key < best)) {
+        for (std::uint32_t j : neighbours_[i]) {
+            const EdgeKey key = edge_key(i, j);
+            if (!found || key < best) {
                 best = key;
                 found = true;
             }
+        }
         return found;
     }
 
-    // Queues the node with its smallest admissible edge, or takes it out without one.
+    // Queues the node with its smallest edge, or takes it out without one.
     void refresh(std::uint32_t i) {
         EdgeKey best;
         if (best_edge(i, best))
@@ -119,11 +120,12 @@ private:
         // Only edges at a changed (a moved, b's edges became a's): a neighbour whose best edge
         // touched a or b looks again at all its edges, any other one only at its edge to a.
         for (std::uint32_t c : neighbours_[a]) {
-            EdgeKey key;
-            if (queue_.contains(c) && (queue_.key(c).touches(a) || queue_.key(c).touches(b)))
+            if (queue_.contains(c) && (queue_.key(c).touches(a) || queue_.key(c).touches(b))) {
                 refresh(c);
-            else if (admissible_key(c, a, key) && (!queue_.contains(c) || key < queue_.key(c)))
-                queue_.set(c, key);
+                continue;
+            }
+            const EdgeKey key = edge_key(c, a);
+            if (!queue_.contains(c) || key < queue_.key(c)) queue_.set(c, key);
         }
     }
 

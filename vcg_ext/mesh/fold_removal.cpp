@@ -226,13 +226,12 @@ private:
     // the way of the fills may be gone too: a corner whose fan, open at the hole, can be
     // triangulated again across it (the notch of an open hole) closes the hole.
     bool close_cut(const Triangle& cut) {
+        // The hole is still there: no standing face holds the cut face's edges.
+        for (int k = 0; k < 3; ++k)
+            if (has_directed_edge(cut[k], cut[(k + 1) % 3])) return false;
         for (const bool facing : {true, false})
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t v = cut[k], next = cut[(k + 1) % 3], last = cut[(k + 2) % 3];
-                // The hole is still there: no standing face holds the cut face's edges.
-                if (has_directed_edge(v, next) || has_directed_edge(next, last) ||
-                    has_directed_edge(last, v))
-                    return false;
                 std::vector<Triangle> fan;
                 for (std::uint32_t f : faces_of(v)) fan.push_back(triangles_[f]);
                 if (fan.empty()) continue; // v went with another fill
@@ -514,7 +513,7 @@ private:
         const auto diagonal_free = [&](std::size_t i, std::size_t j) {
             return j == i + 1 || (i == 0 && j == m - 1) || !has_edge(c[i], c[j]);
         };
-        if (avoid_crossings) gather_standing(hole);
+        if (avoid_crossings) gather_standing(corners_box(hole.corners));
         std::vector<double> best(m * m, -1);
         std::vector<std::size_t> apex(m * m, 0);
         for (std::size_t i = 0; i + 1 < m; ++i) best[i * m + i + 1] = 4; // above any angle
@@ -592,27 +591,15 @@ private:
         return true;
     }
 
+    // Whether t crosses a standing face (the first one met is the blocker).
     bool intersects_standing(const Triangle& t) {
-        const Box box = geometry_.box(t);
-        near_.clear();
-        grid_.query(box, near_);
-        ++search_;
-        for (std::uint32_t f : near_) {
-            if (seen_[f] == search_ || !alive_[f]) continue;
-            seen_[f] = search_;
-            if (geometry_.intersect(t, geometry_.triangle(f))) {
-                blocker_ = f;
-                return true;
-            }
-        }
-        return false;
+        gather_standing(geometry_.box(t));
+        return intersects_gathered(t);
     }
 
-    // The standing faces near the hole, each once with its box: every triangle over the hole's
-    // corners lies in their box, so one grid search serves all the fills' tests.
-    void gather_standing(const Hole& hole) {
-        Box box{positions_[hole.corners.front()], positions_[hole.corners.front()]};
-        for (std::uint32_t c : hole.corners) box.add(positions_[c]);
+    // The standing faces whose boxes meet `box`, each once with its box. A fill's triangles lie
+    // in the box of the hole's corners: one search there serves all its tests.
+    void gather_standing(const Box& box) {
         near_.clear();
         grid_.query(box, near_);
         ++search_;
@@ -625,7 +612,7 @@ private:
         }
     }
 
-    // intersects_standing() among the gathered faces (t over the hole's corners).
+    // intersects_standing() among the gathered faces (t within the box they were gathered for).
     bool intersects_gathered(const Triangle& t) {
         const Box box = geometry_.box(t);
         for (const auto& [f, b] : gathered_)
@@ -634,6 +621,12 @@ private:
                 return true;
             }
         return false;
+    }
+
+    Box corners_box(const std::vector<std::uint32_t>& corners) const {
+        Box box{positions_[corners.front()], positions_[corners.front()]};
+        for (std::uint32_t c : corners) box.add(positions_[c]);
+        return box;
     }
 
     Triangle welded(const Triangle& t) const {
