@@ -88,27 +88,33 @@ void orient_outward(const std::vector<Vec3>& positions, const MeshStats& stats,
     }
 }
 
-// The output: vertices at the cloud points they stand for, with their normals; measured into
-// report.mesh.
+// The output: vertices at the cloud points they stand for, with their normals.
 Reconstruction make_output(const PreparedCloud& cloud,
                            const IndexVector<VertexIndex, PointIndex>& vertex_point,
-                           std::vector<Triangle> triangles, bool outward,
-                           ReconstructionReport& report) {
+                           std::vector<Triangle> triangles) {
     Reconstruction mesh;
     mesh.triangles = std::move(triangles);
-    std::vector<Vec3> positions;
-    positions.reserve(vertex_point.size());
     mesh.vertex_input_index.reserve(vertex_point.size());
     mesh.vertex_normals.reserve(vertex_point.size());
     for (PointIndex p : vertex_point) {
         mesh.vertex_input_index.push_back(cloud.input_index[p].value());
         mesh.vertex_normals.push_back(cloud.normals[p.value()]);
-        positions.push_back(cloud.positions[p.value()]);
     }
-    std::vector<std::uint32_t> component;
-    report.mesh = measure_mesh(positions.size(), mesh.triangles, &component);
-    if (outward) orient_outward(positions, report.mesh, component, mesh, report);
     return mesh;
+}
+
+// The mesh as written, measured into report.mesh once the fold repair is done (so that the
+// measures and D-6 see the faces it cut and added), and its closed components turned outwards.
+void measure_output(const PointSet& input, bool outward, Reconstruction& mesh,
+                    ReconstructionReport& report) {
+    Timer timer(report.timings, "measure");
+    std::vector<std::uint32_t> component;
+    report.mesh = measure_mesh(mesh.vertex_input_index.size(), mesh.triangles, &component);
+    if (!outward) return;
+    std::vector<Vec3> positions;
+    positions.reserve(mesh.vertex_input_index.size());
+    for (std::uint32_t i : mesh.vertex_input_index) positions.push_back(input.positions[i]);
+    orient_outward(positions, report.mesh, component, mesh, report);
 }
 
 // The coordinates as the writers store them: the input's, at its precision. D-26 and D-32 test
@@ -144,7 +150,6 @@ void take_fold_removal(const PointSet& input, FoldRemoval& removal, Reconstructi
     for (std::uint32_t i = 0; i < input.size(); ++i)
         if (was_vertex[i] && !is_vertex[i]) report.dropped_fold.push_back(i);
     report.vertex_copies += removal.stats.vertex_copies;
-    report.mesh = measure_mesh(mesh.vertex_input_index.size(), mesh.triangles);
 }
 
 // The fold repair on the finished mesh, on the coordinates as written: one search for the
@@ -295,10 +300,10 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     CompactMesh<PointIndex> m = compact<PointIndex>(cloud.size(), std::move(rsr_mesh.triangles));
     for (PointIndex p : m.unused) report.not_in_triangle.push_back(cloud.input_index[p].value());
     report.vertex_copies = m.copies;
-    Reconstruction mesh =
-        make_output(cloud, m.vertex_point, std::move(m.triangles), options.orient_outward, report);
+    Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
     assembly.reset();
     repair_and_remove_folds(input, options.fold_repair_rounds, exec, mesh, report);
+    measure_output(input, options.orient_outward, mesh, report);
     account(input, mesh, report);
     require_triangles(mesh, report);
     return mesh;
@@ -385,10 +390,10 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     IndexVector<VertexIndex, PointIndex> vertex_point;
     vertex_point.reserve(out.vertex_point.size());
     for (VertexIndex v : out.vertex_point) vertex_point.push_back(fine.vertex_node[v]);
-    Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles),
-                                      options.rsr.orient_outward, report);
+    Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles));
     assembly.reset();
     repair_and_remove_folds(input, options.rsr.fold_repair_rounds, exec, mesh, report);
+    measure_output(input, options.rsr.orient_outward, mesh, report);
     account(input, mesh, report);
     require_triangles(mesh, report);
     return mesh;

@@ -109,8 +109,11 @@ bool triangles_meet(const Corners& a, const Corners& b) {
 bool meet_beyond_shared_corner(const Corners& a, int ka, const Corners& b, int kb) {
     const Vec3 &a1 = a[(ka + 1) % 3], &a2 = a[(ka + 2) % 3];
     const Vec3 &b1 = b[(kb + 1) % 3], &b2 = b[(kb + 2) % 3];
-    return segment_meets_triangle(b1, b2, orient3d(a[0], a[1], a[2], b1),
-                                  orient3d(a[0], a[1], a[2], b2), a) ||
+    const int b1_side = orient3d(a[0], a[1], a[2], b1), b2_side = orient3d(a[0], a[1], a[2], b2);
+    // b's other corners strictly on one side of a's plane: b touches that plane at the shared
+    // corner only, so a cannot meet it elsewhere (most neighbours in a fan end here).
+    if (b1_side * b2_side > 0) return false;
+    return segment_meets_triangle(b1, b2, b1_side, b2_side, a) ||
            segment_meets_triangle(a1, a2, orient3d(b[0], b[1], b[2], a1),
                                   orient3d(b[0], b[1], b[2], a2), b);
 }
