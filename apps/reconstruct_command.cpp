@@ -207,6 +207,10 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
                     "%zu with an unresolved crossing\n",
                     r.coarse_points, e.replayed, e.records, e.failed_no_pair, e.merged_by_l_min,
                     e.unresolved_crossings);
+        if (r.preprocess.denoised)
+            std::printf("  noise: %.2f point spacings, so HRsR worked on smoothed positions (the "
+                        "mesh keeps the input's)\n",
+                        r.preprocess.relative_noise);
     }
     const std::string genus = genus_of_closed_components_text(m);
     const std::string largest = largest_component_text(m);

@@ -105,15 +105,18 @@ Reconstruction make_output(const PreparedCloud& cloud,
 
 // The mesh as written, measured into report.mesh once the fold repair is done (so that the
 // measures and D-6 see the faces it cut and added), and its closed components turned outwards.
-void measure_output(const PointSet& input, bool outward, Reconstruction& mesh,
-                    ReconstructionReport& report) {
+void measure_output(const PointSet& input, const Normalisation& normalisation, bool outward,
+                    Reconstruction& mesh, ReconstructionReport& report) {
     Timer timer(report.timings, "measure");
     std::vector<std::uint32_t> component;
     report.mesh = measure_mesh(mesh.vertex_input_index.size(), mesh.triangles, &component);
     if (!outward) return;
+    // Volumes in the normalised coordinates (D-2), as sanitize() computes them: far from the
+    // origin the input's own would cancel.
     std::vector<Vec3> positions;
     positions.reserve(mesh.vertex_input_index.size());
-    for (std::uint32_t i : mesh.vertex_input_index) positions.push_back(input.positions[i]);
+    for (std::uint32_t i : mesh.vertex_input_index)
+        positions.push_back((input.positions[i] - normalisation.centre) * normalisation.scale);
     orient_outward(positions, report.mesh, component, mesh, report);
 }
 
@@ -303,7 +306,7 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
     assembly.reset();
     repair_and_remove_folds(input, options.fold_repair_rounds, exec, mesh, report);
-    measure_output(input, options.orient_outward, mesh, report);
+    measure_output(input, cloud.normalisation, options.orient_outward, mesh, report);
     account(input, mesh, report);
     require_triangles(mesh, report);
     return mesh;
@@ -319,6 +322,10 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
         prepare_points(input, pre, exec, report.preprocess, nullptr, PrepareFor::Collapse);
     report.points_used = cloud.size();
     report.timings = report.preprocess.timings;
+    // D-33: in a noisy cloud every decision of HRsR (collapse, re-expansion, D-30, D-31, D-28)
+    // is taken on smoothed positions, as RsR's are (§4.4); the output keeps the input's.
+    const std::vector<Vec3>& geometry =
+        report.preprocess.denoised ? cloud.smoothed : cloud.positions;
 
     CollapsedCloud collapsed;
     {
@@ -328,7 +335,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
         const double floor =
             double(std::min(cloud.size(), constants::kMinCoarsePoints)) / double(cloud.size());
         collapse_options.collapse_ratio = std::max(collapse_options.collapse_ratio, floor);
-        collapsed = collapse(cloud.positions, cloud.normals, collapse_options, exec);
+        collapsed = collapse(geometry, cloud.normals, collapse_options, exec);
     }
     report.coarse_points = collapsed.survivors.size();
     std::vector<PointIndex> dropped_nodes;
@@ -337,7 +344,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
         Timer timer(report.timings, "hand-off");
         coarse = hand_off(cloud, collapsed, pre, exec, report, dropped_nodes);
         // D-31: a coarse handle edge must be one RsR could make on the input points.
-        coarse.handle_reach = input_reach(cloud.positions, coarse.node.values(),
+        coarse.handle_reach = input_reach(geometry, coarse.node.values(),
                                           rsr::candidate_rank(pre.k, cloud.size()), exec);
     }
     if (coarse.size() == 0)
@@ -366,9 +373,8 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     ReexpandedMesh fine;
     {
         Timer timer(report.timings, "re-expansion");
-        fine = replay_collapses({cloud.positions, cloud.normals, coarse_mesh,
-                                 std::move(collapsed.records), options.reexpand,
-                                 report.l_min * cloud.normalisation.scale},
+        fine = replay_collapses({geometry, cloud.normals, coarse_mesh, std::move(collapsed.records),
+                                 options.reexpand, report.l_min * cloud.normalisation.scale},
                                 exec, report.reexpansion, reexpansion_observer);
     }
 
@@ -377,11 +383,10 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     collapsed = CollapsedCloud();
     // D-30: holes in the data that RsR's ears closed on the coarse cloud (where the input's
     // holes are only a few coarse spacings across) open again.
-    report.unsampled_triangles_removed =
-        remove_unsampled_triangles(fine.triangles, cloud.positions, fine.vertex_node,
-                                   rsr::candidate_rank(pre.k, cloud.size()), exec);
+    report.unsampled_triangles_removed = remove_unsampled_triangles(
+        fine.triangles, geometry, fine.vertex_node, rsr::candidate_rank(pre.k, cloud.size()), exec);
     record_fates(cloud, fine.alias, root, dropped_nodes, report);
-    report.small_holes_filled = fill_small_holes(fine.triangles, cloud.positions, fine.vertex_node);
+    report.small_holes_filled = fill_small_holes(fine.triangles, geometry, fine.vertex_node);
     // The re-expanded mesh is manifold by construction; the fan split is a safety net.
     // Its vertices are compacted into the output's: both are VertexIndex, of two meshes.
     CompactMesh<VertexIndex> out =
@@ -393,7 +398,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles));
     assembly.reset();
     repair_and_remove_folds(input, options.rsr.fold_repair_rounds, exec, mesh, report);
-    measure_output(input, options.rsr.orient_outward, mesh, report);
+    measure_output(input, cloud.normalisation, options.rsr.orient_outward, mesh, report);
     account(input, mesh, report);
     require_triangles(mesh, report);
     return mesh;

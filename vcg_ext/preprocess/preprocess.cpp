@@ -3,6 +3,7 @@
 #include "errors.h"
 #include "knn.h"
 #include "preprocess/components.h"
+#include "preprocess/noise_level.h"
 #include "preprocess/orientation.h"
 #include "preprocess/pca_normals.h"
 #include "preprocess/smoothing.h"
@@ -94,6 +95,16 @@ void propagate_fates_to_duplicates(PreprocessReport& report) {
             report.fate[i] = report.fate[report.duplicate_of[i]];
 }
 
+// D-33: whether HRsR should collapse and re-expand on smoothed positions; the noise is
+// measured on the input positions (`index` is built on them).
+bool noisy(const PreparedCloud& cloud, const KnnIndex& index, const Execution& exec,
+           PreprocessReport& report) {
+    Phase phase(exec, report, "noise level");
+    report.relative_noise = relative_noise(cloud.positions, cloud.normals, index, exec);
+    report.denoised = report.relative_noise > constants::kNoisyCloud;
+    return report.denoised;
+}
+
 } // namespace
 
 std::vector<Vec3> smoothed_positions(const std::vector<Vec3>& positions,
@@ -134,6 +145,9 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     if (purpose == PrepareFor::Collapse && !estimated && !graph) {
         const KnnIndex index(cloud.positions);
         check_input_orientation(index, cloud.normals, exec, report);
+        if (tangent && noisy(cloud, index, exec, report))
+            cloud.smoothed =
+                smoothed_positions(cloud.positions, cloud.normals, options, exec, report);
         return cloud;
     }
     cloud.smoothed = cloud.positions;
@@ -145,6 +159,8 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
         cloud.normals = estimate(cloud.smoothed, *index, options, exec, report);
     else
         check_input_orientation(*index, cloud.normals, exec, report);
+    // The index is on the input positions until the first smoothing round (D-33).
+    if (purpose == PrepareFor::Collapse && tangent) noisy(cloud, *index, exec, report);
     // With input normals, HRsR needs no smoothing of the full cloud: it collapses the unsmoothed
     // positions and smooths the collapsed cloud (§7).
     if (tangent && (estimated || purpose == PrepareFor::Rsr)) {
@@ -178,7 +194,12 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
         }
         if (graph) *graph = std::move(g);
     }
-    if (purpose == PrepareFor::Collapse) std::vector<Vec3>().swap(cloud.smoothed); // unused
+    if (purpose == PrepareFor::Collapse && report.denoised && estimated)
+        // Smoothed again from the input positions along the final normals: the rounds above
+        // moved points along the first, noisier estimates (D-33).
+        cloud.smoothed = smoothed_positions(cloud.positions, cloud.normals, options, exec, report);
+    if (purpose == PrepareFor::Collapse && !report.denoised)
+        std::vector<Vec3>().swap(cloud.smoothed); // unused
     return cloud;
 }
 

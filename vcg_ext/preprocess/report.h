@@ -51,6 +51,10 @@ struct PreprocessReport {
     double smoothing_mean_shift =
         0; ///< mean |displacement| along the normal, fraction of the bbox diagonal
     double smoothing_max_shift = 0; ///< largest one
+    /// HRsR (tangent mode): the cloud's noise in point spacings (D-33, relative_noise()), and
+    /// whether its collapse and re-expansion therefore work on smoothed positions.
+    double relative_noise = 0;
+    bool denoised = false;
 
     double bbox_diagonal = 0;  ///< of the finite input points, in input units
     double cut_length = 0;     ///< R of §4.6, in input units
