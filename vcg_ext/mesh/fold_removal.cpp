@@ -111,7 +111,7 @@ public:
         : positions_(search.positions), normals_(normals), triangles_(triangles),
           representative_(search.representative), geometry_(search.geometry), grid_(search.grid),
           at_(corners_by_vertex(positions_.size(), triangles)), alive_(triangles.size(), 1),
-          pairs_(search.pairs), seen_(triangles.size(), 0) {
+          pairs_(search.pairs) {
         index_pairs();
         for (std::uint32_t v = 0; v < representative_.size(); ++v)
             if (representative_[v] != v) copies_[representative_[v]].push_back(v);
@@ -600,22 +600,13 @@ private:
     // The standing faces whose boxes meet `box`, each once with its box. A fill's triangles lie
     // in the box of the hole's corners: one search there serves all its tests.
     void gather_standing(const Box& box) {
-        near_.clear();
-        grid_.query(box, near_);
-        ++search_;
-        gathered_.clear();
-        for (std::uint32_t f : near_) {
-            if (seen_[f] == search_ || !alive_[f]) continue;
-            seen_[f] = search_;
-            const Box b = geometry_.box(geometry_.triangle(f));
-            if (b.overlaps(box)) gathered_.emplace_back(f, b);
-        }
+        near_.gather(grid_, geometry_, box, [&](std::uint32_t f) { return alive_[f] != 0; });
     }
 
     // intersects_standing() among the gathered faces (t within the box they were gathered for).
     bool intersects_gathered(const Triangle& t) {
         const Box box = geometry_.box(t);
-        for (const auto& [f, b] : gathered_)
+        for (const auto& [f, b] : near_.found())
             if (box.overlaps(b) && geometry_.intersect_unboxed(t, geometry_.triangle(f))) {
                 blocker_ = f;
                 return true;
@@ -703,7 +694,6 @@ private:
         triangles_.push_back(t);
         geometry_.add(welded(t));
         alive_.push_back(1);
-        seen_.push_back(0);
         live_pairs_.push_back(0);
         for (std::uint32_t v : t) added_at_[v].push_back(f);
         grid_.file_again(geometry_.box(welded(t)), f);
@@ -722,9 +712,7 @@ private:
     std::vector<std::uint8_t> alive_;
     const std::vector<TrianglePair>& pairs_;
     std::vector<std::uint32_t> partner_start_, partner_, live_pairs_;
-    std::vector<std::uint32_t> near_, seen_; ///< seen_: the last search that met the face
-    std::vector<std::pair<std::uint32_t, Box>> gathered_; ///< gather_standing()'s faces
-    std::uint32_t search_ = 0;
+    FacesNearBox near_;                ///< gather_standing()'s faces
     std::uint32_t blocker_ = kNoFace;  ///< the standing face that the last fill crossed
     std::size_t reinserted_ = 0;       ///< removed vertices put back (reinsert)
     std::vector<Triangle> inner_cuts_; ///< faces cut with no edge on the border

@@ -135,8 +135,8 @@ public:
     Repair(Region& region, const std::vector<std::uint32_t>& representative,
            TriangleGeometry& geometry, TriangleGrid& grid)
         : region_(region), mesh_(region.mesh()), representative_(representative),
-          geometry_(geometry), grid_(grid), seen_in_search_(geometry.size(), 0),
-          count_(geometry.size(), 0), counted_at_(geometry.size(), 0) {}
+          geometry_(geometry), grid_(grid), count_(geometry.size(), 0),
+          counted_at_(geometry.size(), 0) {}
 
     // From the pairs found by the grid: flips, round by round; `pairs` ends as the pairs left,
     // `stats` gets the flips, the rounds and their number.
@@ -193,31 +193,9 @@ private:
     // Faces other than `skip_a`, `skip_b` whose box overlaps `box`: from the grid, plus the
     // faces flipped so far, filed again after each flip (they may have left the cells the grid
     // has them in). None is degenerate: the grid leaves those out and no flip makes one.
-    const std::vector<std::uint32_t>& near(const Box& box, std::uint32_t skip_a,
-                                           std::uint32_t skip_b) {
-        near_.clear();
-        grid_.query(box, near_);
-        // Each face once (it is filed in several cells), marked with this search's number.
-        ++search_;
-        std::size_t unique = 0;
-        for (std::uint32_t c : near_)
-            if (seen_in_search_[c] != search_) {
-                seen_in_search_[c] = search_;
-                near_[unique++] = c;
-            }
-        near_.resize(unique);
-        // Kept with their boxes: each is tested against four triangles.
-        std::size_t kept = 0;
-        near_box_.resize(near_.size());
-        for (std::uint32_t c : near_) {
-            const Box b = geometry_.box(geometry_.triangle(c));
-            if (c == skip_a || c == skip_b || !box.overlaps(b)) continue;
-            near_box_[kept] = b;
-            near_[kept++] = c;
-        }
-        near_.resize(kept);
-        near_box_.resize(kept);
-        return near_;
+    const FacesNearBox::Found& near(const Box& box, std::uint32_t skip_a, std::uint32_t skip_b) {
+        return near_.gather(grid_, geometry_, box,
+                            [&](std::uint32_t f) { return f != skip_a && f != skip_b; });
     }
 
     // Intersections of `t` with the faces of the last near() search (none for a degenerate t,
@@ -228,10 +206,12 @@ private:
         if (geometry_.degenerate(t)) return 0;
         const Box box = geometry_.box(t);
         std::size_t count = 0;
-        for (std::size_t i = 0; i < near_.size() && count < limit; ++i)
-            if (near_[i] != skip_a && near_[i] != skip_b && box.overlaps(near_box_[i]) &&
-                geometry_.intersect_unboxed(t, geometry_.triangle(near_[i])))
+        for (const auto& [f, f_box] : near_.found()) {
+            if (count >= limit) break;
+            if (f != skip_a && f != skip_b && box.overlaps(f_box) &&
+                geometry_.intersect_unboxed(t, geometry_.triangle(f)))
                 ++count;
+        }
         return count;
     }
 
@@ -351,8 +331,8 @@ private:
         for (std::uint32_t f : changed) {
             const Triangle& t = geometry_.triangle(f);
             if (geometry_.degenerate(t)) continue;
-            near(geometry_.box(t), f, kNoFace); // every face there overlaps t's box
-            for (std::uint32_t o : near_)
+            // Every face listed overlaps t's box.
+            for (const auto& [o, o_box] : near(geometry_.box(t), f, kNoFace))
                 if (geometry_.intersect_unboxed(t, geometry_.triangle(o)))
                     next.emplace_back(std::min(f, o), std::max(f, o));
         }
@@ -366,10 +346,8 @@ private:
     const IndexView<VertexIndex, VertexIndex> representative_; ///< welded ids
     TriangleGeometry& geometry_;
     TriangleGrid& grid_; ///< flipped faces are filed again
-    std::vector<std::uint32_t> near_, around_;
-    std::vector<Box> near_box_;                 ///< the boxes of near_
-    std::vector<std::uint32_t> seen_in_search_; ///< per face: the last search that listed it
-    std::uint32_t search_ = 0;
+    FacesNearBox near_;
+    std::vector<std::uint32_t> around_;
     std::vector<std::uint8_t> intersecting_; ///< per face: in a pair at the start of the round
     /// intersections_of()'s counts, valid where counted_at_ is flips_made_ + 1.
     std::vector<std::uint32_t> count_, counted_at_;

@@ -152,4 +152,38 @@ private:
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> late_; ///< file_again()
 };
 
+/// The faces a grid files near a box, each once and with its box: the neighbourhood search of
+/// the fold repair (D-26) and the fold removal (D-32). A face filed in several cells is listed
+/// once, in the order the grid's query() meets it first.
+class FacesNearBox {
+public:
+    using Found = std::vector<std::pair<std::uint32_t, Box>>;
+
+    /// The faces in the cells `box` covers whose boxes overlap it and that keep(face) accepts.
+    /// The list stays valid until the next call.
+    template <class Keep>
+    const Found& gather(const TriangleGrid& grid, const TriangleGeometry& g, const Box& box,
+                        Keep&& keep) {
+        listed_.clear();
+        grid.query(box, listed_);
+        ++search_;
+        found_.clear();
+        for (std::uint32_t f : listed_) {
+            if (f >= stamp_.size()) stamp_.resize(std::size_t(f) + 1, 0);
+            if (stamp_[f] == search_) continue;
+            stamp_[f] = search_; // listed again later in the same search: seen
+            if (!keep(f)) continue;
+            const Box b = g.box(g.triangle(f));
+            if (b.overlaps(box)) found_.emplace_back(f, b);
+        }
+        return found_;
+    }
+    const Found& found() const { return found_; }
+
+private:
+    std::vector<std::uint32_t> listed_, stamp_; ///< stamp_: per face, the last search meeting it
+    std::uint32_t search_ = 0;
+    Found found_;
+};
+
 } // namespace hrsr
