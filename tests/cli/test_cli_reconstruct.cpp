@@ -4,6 +4,7 @@
 #include "io/point_set_reader.h"
 #include "ply_faces.h"
 #include "reconstruction.h"
+#include "samplers.h"
 #include "temp_folder.h"
 
 #include <gtest/gtest.h>
@@ -114,6 +115,44 @@ TEST_F(CliReconstruct, WritesAMeshOverTheInputPointsAndAReport) {
         if (!same_bits(out.positions[v], input.positions[expected.vertex_input_index[v]])) ++moved;
     EXPECT_EQ(moved, 0u);
     EXPECT_EQ(ratio, library_report.vertex_reference_ratio);
+}
+
+// D-33: a cloud noisier than a point spacing is reconstructed on smoothed positions, which the
+// summary says and the report records; the mesh's vertices are still the input points.
+TEST_F(CliReconstruct, SaysWhenTheCloudIsNoisyEnoughForSmoothedPositions) {
+    PointSet s = testing::sample_sphere(20000);
+    testing::add_noise(s, 0.015 * testing::bounding_box_diagonal(s));
+    std::ostringstream xyz;
+    xyz.precision(17);
+    for (std::size_t i = 0; i < s.size(); ++i)
+        xyz << s.positions[i][0] << ' ' << s.positions[i][1] << ' ' << s.positions[i][2] << ' '
+            << s.normals[i][0] << ' ' << s.normals[i][1] << ' ' << s.normals[i][2] << '\n';
+    std::ofstream(path("noisy.xyz")) << xyz.str();
+    const Outcome r = hrsr("reconstruct " + path("noisy.xyz") + " -o " + path("out.ply") +
+                           " --report " + path("r.json"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("so HRsR worked on smoothed positions"), std::string::npos) << r.out;
+    const nlohmann::json report = nlohmann::json::parse(slurp(path("r.json")));
+    const nlohmann::json& smoothing = report.at("preprocess").at("smoothing");
+    EXPECT_TRUE(smoothing.at("hrsr_on_smoothed_positions").get<bool>());
+    EXPECT_GT(smoothing.at("relative_noise").get<double>(), 0.2);
+    EXPECT_EQ(report.at("mesh").at("boundary_edges").get<long>(), 0);
+    const PointSet in = io::read_point_set(path("noisy.xyz"));
+    const PointSet out = io::read_point_set(path("out.ply"));
+    std::map<std::array<double, 3>, int> input_point;
+    for (const Vec3& p : in.positions) input_point[{p[0], p[1], p[2]}] = 1;
+    for (const Vec3& p : out.positions) EXPECT_TRUE(input_point.count({p[0], p[1], p[2]}));
+
+    // The shipped sample is not noisy: no such line, the flag false.
+    const Outcome clean = hrsr("reconstruct " + std::string(HRSR_SAMPLE) + " -o " +
+                               path("owl.ply") + " --report " + path("owl.json"));
+    ASSERT_EQ(clean.exit_code, 0) << clean.err;
+    EXPECT_EQ(clean.out.find("smoothed positions"), std::string::npos);
+    EXPECT_FALSE(nlohmann::json::parse(slurp(path("owl.json")))
+                     .at("preprocess")
+                     .at("smoothing")
+                     .at("hrsr_on_smoothed_positions")
+                     .get<bool>());
 }
 
 TEST_F(CliReconstruct, InvalidHandlesIsAUsageError) {
