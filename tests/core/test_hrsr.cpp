@@ -176,6 +176,31 @@ TEST(Hrsr, SameMeshForOneAndTwoThreads) {
         ASSERT_EQ(a.vertex_normals[v], b.vertex_normals[v]);
 }
 
+// D-33's path (a noisy cloud, collapsed and re-expanded on smoothed positions), with normals
+// given and estimated: the same mesh for 1, 2 and 8 threads.
+TEST(Hrsr, NoisyCloudGivesTheSameMeshForAnyThreadCount) {
+    PointSet noisy = testing::sample_torus(20000);
+    testing::add_noise(noisy, 0.01 * testing::bounding_box_diagonal(noisy));
+    for (const PointSet& s : {noisy, testing::without_normals(noisy)}) {
+        auto run = [&](int threads) {
+            Execution exec;
+            exec.threads = threads;
+            ReconstructionOptions options;
+            options.rsr.preprocess.k_normals = 64; // noisy enough to be measured as noisy
+            options.rsr.preprocess.k_smoothing = 64;
+            ReconstructionReport report;
+            Reconstruction r = reconstruct(s, options, exec, report);
+            EXPECT_TRUE(report.preprocess.denoised);
+            return r;
+        };
+        const Reconstruction a = run(1), b = run(2), c = run(8);
+        EXPECT_EQ(a.vertex_input_index, b.vertex_input_index);
+        EXPECT_EQ(a.triangles, b.triangles);
+        EXPECT_EQ(a.vertex_input_index, c.vertex_input_index);
+        EXPECT_EQ(a.triangles, c.triangles);
+    }
+}
+
 // D-24 and the no-empty-mesh rule: a tiny cloud still gives a mesh (it is not collapsed to one
 // point), and a cloud no triangle can be built from is an error, never an empty mesh.
 TEST(Hrsr, TinyCloudsGiveAMeshOrAClearError) {
