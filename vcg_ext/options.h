@@ -115,11 +115,12 @@ namespace constants {
 /// Smoothing: normal filter of the neighbours (§4.4).
 inline constexpr double kSmoothingNormalAngleDegrees = 30.0;
 /// D-33: above this noise (relative_noise(): median distance from a fitted quadric over the
-/// median sixth-neighbour distance) HRsR collapses and re-expands on smoothed positions. Measured
-/// (100k points): clean samples and the owl, lion 0–0.04, merged bunny scans 0.1, spheres with
-/// noise of 0.1 / 0.3 / 0.5 % of the diagonal 0.12 / 0.31 / 0.44; below the threshold the
-/// smoothing's shift of clean points costs more folds than it saves (docs/BENCHMARKS.md).
-inline constexpr double kNoisyCloud = 0.2;
+/// median sixth-neighbour distance) HRsR collapses and re-expands on smoothed positions. Measured:
+/// clean samples, the owl and the lion 0–0.07, the merged bunny scans 0.1, the Kinect frame 0.12,
+/// the LMS400 table 0.17, 100k spheres with noise of 0.1 / 0.3 / 0.5 % of the diagonal 0.13 /
+/// 0.33 / 0.46; lower, the smoothing's shift of clean points costs more folds than it saves
+/// (docs/BENCHMARKS.md, "Noise beyond the spacing").
+inline constexpr double kNoisyCloud = 0.15;
 /// Normal filter angle used in Euclidean mode (§3.3).
 inline constexpr double kEuclideanNormalAngleDegrees = 90.0;
 /// Automatic PCA and smoothing neighbourhoods: clamp(N / kPointsPerNeighbour, kMinNeighbours,
