@@ -326,6 +326,8 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     // is taken on smoothed positions, as RsR's are (§4.4); the output keeps the input's.
     const std::vector<Vec3>& geometry =
         report.preprocess.denoised ? cloud.smoothed : cloud.positions;
+    const std::vector<Vec3>& geometry_normals =
+        cloud.smoothed_normals.empty() ? cloud.normals : cloud.smoothed_normals;
 
     CollapsedCloud collapsed;
     {
@@ -335,7 +337,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
         const double floor =
             double(std::min(cloud.size(), constants::kMinCoarsePoints)) / double(cloud.size());
         collapse_options.collapse_ratio = std::max(collapse_options.collapse_ratio, floor);
-        collapsed = collapse(geometry, cloud.normals, collapse_options, exec);
+        collapsed = collapse(geometry, geometry_normals, collapse_options, exec);
     }
     report.coarse_points = collapsed.survivors.size();
     std::vector<PointIndex> dropped_nodes;
@@ -373,9 +375,10 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     ReexpandedMesh fine;
     {
         Timer timer(report.timings, "re-expansion");
-        fine = replay_collapses({geometry, cloud.normals, coarse_mesh, std::move(collapsed.records),
-                                 options.reexpand, report.l_min * cloud.normalisation.scale},
-                                exec, report.reexpansion, reexpansion_observer);
+        fine =
+            replay_collapses({geometry, geometry_normals, coarse_mesh, std::move(collapsed.records),
+                              options.reexpand, report.l_min * cloud.normalisation.scale},
+                             exec, report.reexpansion, reexpansion_observer);
     }
 
     begin_phase(exec, "assembly");

@@ -4,6 +4,7 @@
 
 #include "graph/neighbour_graph.h"
 #include "index_types.h"
+#include "knn.h"
 #include "options.h"
 #include "parallel.h"
 #include "point_set.h"
@@ -26,6 +27,9 @@ struct PreparedCloud {
     std::vector<Vec3> smoothed;  ///< normalised smoothed positions (= positions in Euclidean
                                  ///< mode); empty when prepared for the collapse
     std::vector<Vec3> normals;   ///< unit; consistently oriented per connected piece
+    /// D-33, HRsR on a noisy cloud with input normals: the normals its collapse and re-expansion
+    /// use with `smoothed` (averaged_normals()); empty = `normals`. Outputs keep `normals`.
+    std::vector<Vec3> smoothed_normals;
     /// Input points each point stands for (HRsR's coarse cloud: its collapse weight); empty =
     /// one each. RsR measures handle loops in spacings of the input through it (D-27).
     std::vector<std::uint32_t> weights;
@@ -55,10 +59,12 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
                              CsrGraph* graph = nullptr, PrepareFor purpose = PrepareFor::Rsr);
 
 /// Tangent mode: two smoothing rounds with the normals fixed (§4.4, §7); Euclidean mode: a copy.
+/// `index_of_positions`, if given, is a kd-tree on `positions` the first round uses.
 std::vector<Vec3> smoothed_positions(const std::vector<Vec3>& positions,
                                      const std::vector<Vec3>& normals,
                                      const PreprocessOptions& options, const Execution& exec,
-                                     PreprocessReport& report);
+                                     PreprocessReport& report,
+                                     const KnnIndex* index_of_positions = nullptr);
 
 /// The symmetric union of the k-nearest-neighbour relation on `positions` (D-7).
 CsrGraph neighbour_graph(const std::vector<Vec3>& positions, int k, const Execution& exec);

@@ -58,4 +58,18 @@ SmoothingResult smooth_along_normals(const std::vector<Vec3>& positions,
     return result;
 }
 
+std::vector<Vec3> averaged_normals(const std::vector<Vec3>& normals, const KnnIndex& index,
+                                   int neighbours, const Execution& exec) {
+    std::vector<Vec3> averaged(normals.size());
+    parallel_for(exec, normals.size(), [&](std::size_t i) {
+        thread_local std::vector<Neighbour> found;
+        index.neighbours_of(std::uint32_t(i), neighbours, found);
+        Vec3 sum = normals[i];
+        for (const Neighbour& nb : found)
+            if (normals[nb.index].dot(normals[i]) > 0) sum += normals[nb.index];
+        averaged[i] = sum / sum.Norm(); // sum · n_i >= 1: never zero
+    });
+    return averaged;
+}
+
 } // namespace hrsr

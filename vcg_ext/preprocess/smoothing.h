@@ -23,4 +23,11 @@ SmoothingResult smooth_along_normals(const std::vector<Vec3>& positions,
                                      const std::vector<Vec3>& normals, const KnnIndex& index,
                                      int neighbours, bool oriented, const Execution& exec);
 
+/// One averaging round over oriented unit normals: each becomes the mean of its own and those of
+/// its `neighbours` nearest points that face its side (n_q · n_p > 0: the other side of a thin
+/// part is left out; no narrower cone, which would pull the mean back towards n_p). `index` is
+/// built on the points the normals belong to.
+std::vector<Vec3> averaged_normals(const std::vector<Vec3>& normals, const KnnIndex& index,
+                                   int neighbours, const Execution& exec);
+
 } // namespace hrsr
