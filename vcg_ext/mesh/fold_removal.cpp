@@ -109,7 +109,8 @@ public:
     Remover(FoldSearch& search, const std::vector<Vec3>& normals,
             const std::vector<Triangle>& triangles)
         : positions_(search.positions), normals_(normals), triangles_(triangles),
-          representative_(search.representative), geometry_(search.geometry), grid_(search.grid),
+          original_faces_(triangles.size()), representative_(search.representative),
+          geometry_(search.geometry), grid_(search.grid),
           at_(corners_by_vertex(positions_.size(), triangles)), alive_(triangles.size(), 1),
           pairs_(search.pairs) {
         index_pairs();
@@ -143,8 +144,13 @@ public:
         triangles.clear();
         for (std::size_t f = 0; f < triangles_.size(); ++f)
             if (alive_[f]) triangles.push_back(triangles_[f]);
+        // Only the corners of faces cut or added can be pinched: every vertex had one fan.
+        std::vector<std::uint8_t> changed(positions_.size(), 0);
+        for (std::size_t f = 0; f < triangles_.size(); ++f)
+            if (!alive_[f] || f >= original_faces_)
+                for (std::uint32_t v : triangles_[f]) changed[v] = 1;
         FoldRemoval out;
-        out.vertex_source = compact_and_split_vertices(positions_.size(), triangles);
+        out.vertex_source = compact_and_split_vertices(positions_.size(), triangles, &changed);
         std::vector<std::uint8_t> seen(positions_.size(), 0);
         for (std::uint32_t v : out.vertex_source) {
             stats.vertex_copies += seen[v];
@@ -701,7 +707,8 @@ private:
 
     const std::vector<Vec3>& positions_;
     const std::vector<Vec3>& normals_;
-    std::vector<Triangle> triangles_; ///< by vertex; faces added at the end
+    std::vector<Triangle> triangles_;  ///< by vertex; faces added at the end
+    const std::size_t original_faces_; ///< the faces given; later ones were added
     const std::vector<std::uint32_t>& representative_;
     /// Vertices at one position, by their representative (only where there are several).
     std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> copies_;

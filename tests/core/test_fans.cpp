@@ -1,0 +1,51 @@
+// Fans at a vertex (§5.8): the whole-mesh count and the count restricted to flagged vertices,
+// which D-32 uses for the corners of the faces it cut or added.
+#include "mesh/fans.h"
+
+#include <gtest/gtest.h>
+
+namespace hrsr {
+namespace {
+
+// Two discs of two triangles each, touching at vertex 0 only (a bow tie), and a separate
+// triangle.
+std::vector<Triangle> bow_tie() {
+    return {{0, 1, 2}, {0, 2, 3}, {0, 4, 5}, {0, 5, 6}, {7, 8, 9}};
+}
+
+TEST(Fans, ABowTieVertexHasTwoFansInTheOrderOfTheirFirstTriangle) {
+    const Fans fans = compute_fans(10, bow_tie());
+    EXPECT_EQ(fans.fan_count[0], 2u);
+    EXPECT_EQ(fans.fan_count[2], 1u);
+    EXPECT_EQ(fans.corner_fan[0], 0u); // triangle 0, corner 0
+    EXPECT_EQ(fans.corner_fan[3], 0u); // triangle 1
+    EXPECT_EQ(fans.corner_fan[6], 1u); // triangle 2
+    EXPECT_EQ(fans.corner_fan[9], 1u); // triangle 3
+}
+
+TEST(Fans, FlaggedVerticesGetTheWholeMeshNumbering) {
+    const std::vector<Triangle> triangles = bow_tie();
+    const Fans all = compute_fans(10, triangles);
+    std::vector<std::uint8_t> only(10, 0);
+    only[0] = only[5] = 1;
+    const Fans some = compute_fans(10, triangles, only);
+    EXPECT_EQ(some.fan_count, all.fan_count); // every vertex here has one fan but vertex 0
+    EXPECT_EQ(some.corner_fan, all.corner_fan);
+}
+
+TEST(Fans, SplittingOnlyFlaggedVerticesGivesTheSameMesh) {
+    std::vector<Triangle> whole = bow_tie(), flagged = bow_tie();
+    std::vector<std::uint8_t> only(10, 0);
+    only[0] = 1;
+    const std::vector<std::uint32_t> source_whole = compact_and_split_vertices(10, whole);
+    const std::vector<std::uint32_t> source_flagged =
+        compact_and_split_vertices(10, flagged, &only);
+    EXPECT_EQ(source_flagged, source_whole);
+    EXPECT_EQ(flagged, whole);
+    ASSERT_EQ(source_whole.size(), 11u); // vertex 0 copied once
+    EXPECT_EQ(source_whole[10], 0u);
+    EXPECT_EQ(whole[2][0], 10u); // the second fan uses the copy
+}
+
+} // namespace
+} // namespace hrsr
