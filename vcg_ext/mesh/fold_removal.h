@@ -32,8 +32,9 @@ struct FoldRemoval {
 /// is tried; where that fails too, one face of the pair goes: the one that opens the mesh least
 /// (an edge on the border: the border only moves), then the one in more pairs. New faces
 /// intersect nothing and every step removes a face of the pair, so no pair is left. Sequential, in
-/// a fixed order: the same on any number of threads. `triangles` (a consistently oriented manifold)
-/// is rewritten over the result's vertices: kept faces in their order, then the new ones.
+/// a fixed order: the same on any number of threads. `triangles` (a consistently oriented manifold,
+/// one fan per vertex: only the corners of faces cut or added are split when pinched) is
+/// rewritten over the result's vertices: kept faces in their order, then the new ones.
 FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
                          std::vector<Triangle>& triangles, const Execution& exec);
 
