@@ -44,7 +44,11 @@ double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
         return std::atan2((u ^ v).Norm(), u.dot(v));
     };
     if (a == b || b == c || c == a) return 0;
-    return std::min({angle(b - a, c - a), angle(c - b, a - b), angle(a - c, b - c)});
+    // The smallest angle is opposite the shortest side: one angle to compute, not three.
+    const double ab = (b - a).SquaredNorm(), bc = (c - b).SquaredNorm(), ca = (a - c).SquaredNorm();
+    if (bc <= ab && bc <= ca) return angle(b - a, c - a);
+    if (ca <= ab) return angle(c - b, a - b);
+    return angle(a - c, b - c);
 }
 
 // The hole of `faces` around v (each face holds v once): its link edges chained from the one
