@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace hrsr {
@@ -114,11 +115,9 @@ std::vector<Vec3> smoothed_positions(const std::vector<Vec3>& positions,
     std::vector<Vec3> smoothed = positions;
     if (options.distance != DistanceMode::Tangent || positions.size() < 2) return smoothed;
     for (int round = 0; round < 2; ++round) {
-        if (round == 0 && index_of_positions) {
-            smooth(smoothed, normals, *index_of_positions, true, options, exec, report);
-            continue;
-        }
-        const KnnIndex index(smoothed);
+        std::optional<KnnIndex> own; // each round reads the previous one's positions
+        const KnnIndex& index =
+            round == 0 && index_of_positions ? *index_of_positions : own.emplace(smoothed);
         smooth(smoothed, normals, index, true, options, exec, report);
     }
     return smoothed;
