@@ -1,6 +1,7 @@
 #include "geometry.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hrsr {
 
@@ -43,8 +44,15 @@ double largest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-    return std::min(
-        {corner_angle(a, b, c, 0.0), corner_angle(b, c, a, 0.0), corner_angle(c, a, b, 0.0)});
+    if (a == b || b == c || c == a) return 0;
+    const auto angle = [](const Vec3& u, const Vec3& v) {
+        return std::atan2((u ^ v).Norm(), u.dot(v)); // accurate near 0 and π, unlike acos
+    };
+    // The smallest angle is opposite the shortest side: one angle to compute, not three.
+    const double ab = (b - a).SquaredNorm(), bc = (c - b).SquaredNorm(), ca = (a - c).SquaredNorm();
+    if (bc <= ab && bc <= ca) return angle(b - a, c - a);
+    if (ca <= ab) return angle(c - b, a - b);
+    return angle(a - c, b - c);
 }
 
 } // namespace hrsr

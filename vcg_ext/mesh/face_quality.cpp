@@ -1,24 +1,11 @@
 #include "mesh/face_quality.h"
 
+#include "geometry.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace hrsr {
-
-namespace {
-
-/// Smallest interior angle of a non-degenerate triangle, in degrees.
-double smallest_angle_degrees(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 p[3] = {a, b, c};
-    double smallest = M_PI;
-    for (int k = 0; k < 3; ++k) {
-        const Vec3 u = p[(k + 1) % 3] - p[k], v = p[(k + 2) % 3] - p[k];
-        smallest = std::min(smallest, std::atan2((u ^ v).Norm(), u.dot(v)));
-    }
-    return smallest * 180.0 / M_PI;
-}
-
-} // namespace
 
 bool is_degenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
     const double longest =
@@ -38,7 +25,7 @@ FaceQuality face_quality(const std::vector<Vec3>& p, const std::vector<Triangle>
             q.repeated_vertex_faces += repeated;
             continue;
         }
-        angles.push_back(smallest_angle_degrees(p[t[0]], p[t[1]], p[t[2]]));
+        angles.push_back(smallest_angle(p[t[0]], p[t[1]], p[t[2]]) * 180.0 / M_PI);
     }
     std::vector<Triangle> sorted = welded;
     for (Triangle& t : sorted) std::sort(t.begin(), t.end());

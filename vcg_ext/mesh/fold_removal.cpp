@@ -1,5 +1,6 @@
 #include "mesh/fold_removal.h"
 
+#include "geometry.h"
 #include "mesh/fans.h"
 #include "mesh/triangle_grid.h"
 
@@ -37,19 +38,6 @@ struct Hole {
     std::vector<std::uint32_t> corners;
     bool closed = false; ///< an inner vertex: each side, the last to the first too, is an edge
 };
-
-// The smallest angle of triangle abc in radians (0 when two corners coincide).
-double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const auto angle = [](const Vec3& u, const Vec3& v) {
-        return std::atan2((u ^ v).Norm(), u.dot(v));
-    };
-    if (a == b || b == c || c == a) return 0;
-    // The smallest angle is opposite the shortest side: one angle to compute, not three.
-    const double ab = (b - a).SquaredNorm(), bc = (c - b).SquaredNorm(), ca = (a - c).SquaredNorm();
-    if (bc <= ab && bc <= ca) return angle(b - a, c - a);
-    if (ca <= ab) return angle(c - b, a - b);
-    return angle(a - c, b - c);
-}
 
 // The hole of `faces` around v (each face holds v once): its link edges chained from the one
 // corner that starts no chain... or, for an inner vertex, from the first face's. Fails (nullopt)
