@@ -97,13 +97,32 @@ nlohmann::json fold_repair_json(const ReconstructionReport& r) {
             {"intersecting_pairs_left", r.fold_removal.pairs_after}};
 }
 
+// The collapse and the re-expansion (§6–§8), and D-30 / D-34 on their mesh.
+nlohmann::json hrsr_json(const ReconstructionReport& r) {
+    const ReexpansionStats& e = r.reexpansion;
+    return {{"coarse_points", r.coarse_points},
+            {"records", e.records},
+            {"records_replayed", e.replayed},
+            {"records_failed",
+             {{"no_split_pair", e.failed_no_pair}, {"node_not_in_mesh", e.skipped_no_vertex}}},
+            {"unresolved_crossings", e.unresolved_crossings},
+            {"crossing_flips", e.crossing_flips},
+            {"boundary_triangles_removed", e.triangles_removed},
+            {"unsampled_triangles_removed", r.unsampled_triangles_removed},
+            {"border_slivers_peeled", e.border_slivers_peeled},
+            {"border_splits", e.border_splits},
+            {"border_notches_closed", r.border_notches_closed},
+            {"improvement_flips", e.improvement_flips},
+            {"merged_by_l_min", e.merged_by_l_min},
+            {"stopped_at_l_min", e.stopped_at_l_min}};
+}
+
 nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionReport& r) {
     const MeshStats& m = r.mesh;
     nlohmann::json timings = nlohmann::json::array();
     for (const auto& [phase, seconds] : r.timings)
         timings.push_back({{"phase", phase}, {"seconds", seconds}});
     const PreprocessOptions& p = a.options.rsr.preprocess;
-    const ReexpansionStats& e = r.reexpansion;
     return {{"tool", "hrsr"},
             {"version", HRSR_VERSION},
             {"command", "reconstruct"},
@@ -169,20 +188,7 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"small_holes_filled", r.small_holes_filled},
               {"ear_edges", r.ear_edges}}},
             {"fold_repair", fold_repair_json(r)},
-            {"hrsr",
-             {{"coarse_points", r.coarse_points},
-              {"records", e.records},
-              {"records_replayed", e.replayed},
-              {"records_failed",
-               {{"no_split_pair", e.failed_no_pair}, {"node_not_in_mesh", e.skipped_no_vertex}}},
-              {"unresolved_crossings", e.unresolved_crossings},
-              {"crossing_flips", e.crossing_flips},
-              {"boundary_triangles_removed", e.triangles_removed},
-              {"unsampled_triangles_removed", r.unsampled_triangles_removed},
-              {"improvement_flips", e.improvement_flips},
-              {"merged_by_l_min", e.merged_by_l_min},
-
-              {"stopped_at_l_min", e.stopped_at_l_min}}},
+            {"hrsr", hrsr_json(r)},
             {"preprocess", to_json(r.preprocess)},
             {"timings", timings},
             {"peak_memory_bytes", peak_memory_bytes()}};

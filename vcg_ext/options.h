@@ -183,6 +183,15 @@ inline constexpr double kOverlongFactor = 2.0;
 /// HRsR never collapses below min(N, this) points (D-24): RsR needs points to triangulate, and
 /// 12.5 % of a tiny cloud is a single point (3 points gave an empty mesh).
 inline constexpr std::size_t kMinCoarsePoints = 200;
+/// D-34: a triangle on the coarse mesh's border whose angle opposite its border edge is at least
+/// this is a sliver over nearly collinear border points, peeled before the re-expansion.
+inline constexpr double kBorderSliverDegrees = 120.0;
+/// D-34: a border vertex whose faces leave less than this of its surroundings open lies in a
+/// notch of the border, closed by an ear after the re-expansion.
+inline constexpr double kBorderNotchDegrees = 90.0;
+/// D-34: ears never take a border loop below this many vertices, so a hole in the data never
+/// shrinks to what D-28 closes (the shark lost one of its four holes).
+inline constexpr std::size_t kMinNotchedLoop = 10;
 } // namespace constants
 
 } // namespace hrsr

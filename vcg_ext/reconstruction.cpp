@@ -1,6 +1,7 @@
 #include "reconstruction_observed.h"
 
 #include "errors.h"
+#include "hrsr/border_notches.h"
 #include "hrsr/collapse.h"
 #include "hrsr/input_reach.h"
 #include "hrsr/unsampled_triangles.h"
@@ -17,6 +18,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <optional>
 
 namespace hrsr {
@@ -286,6 +288,21 @@ void record_fates(const PreparedCloud& cloud, const IndexVector<PointIndex, Poin
               report.dropped_small_coarse_component.end());
 }
 
+// The re-expanded mesh's border: D-34's notches closed, then D-30's holes in the data opened,
+// then D-28's small loops closed.
+void finish_border(ReexpandedMesh& fine, const std::vector<Vec3>& geometry, int candidate_rank,
+                   const Execution& exec, ReconstructionReport& report) {
+    report.border_notches_closed =
+        close_border_notches(fine.triangles, fine.border, geometry, fine.vertex_node,
+                             constants::kBorderNotchDegrees * M_PI / 180.0);
+    std::vector<BorderEdge>().swap(fine.border); // spent
+    // D-30: holes in the data that RsR's ears closed on the coarse cloud (where the input's
+    // holes are only a few coarse spacings across) open again.
+    report.unsampled_triangles_removed = remove_unsampled_triangles(
+        fine.triangles, geometry, fine.vertex_node, candidate_rank, exec);
+    report.small_holes_filled = fill_small_holes(fine.triangles, geometry, fine.vertex_node);
+}
+
 } // namespace
 
 Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
@@ -384,12 +401,8 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     begin_phase(exec, "assembly");
     std::optional<Timer> assembly(std::in_place, report.timings, "assembly");
     collapsed = CollapsedCloud();
-    // D-30: holes in the data that RsR's ears closed on the coarse cloud (where the input's
-    // holes are only a few coarse spacings across) open again.
-    report.unsampled_triangles_removed = remove_unsampled_triangles(
-        fine.triangles, geometry, fine.vertex_node, rsr::candidate_rank(pre.k, cloud.size()), exec);
     record_fates(cloud, fine.alias, root, dropped_nodes, report);
-    report.small_holes_filled = fill_small_holes(fine.triangles, geometry, fine.vertex_node);
+    finish_border(fine, geometry, rsr::candidate_rank(pre.k, cloud.size()), exec, report);
     // The re-expanded mesh is manifold by construction; the fan split is a safety net.
     // Its vertices are compacted into the output's: both are VertexIndex, of two meshes.
     CompactMesh<VertexIndex> out =

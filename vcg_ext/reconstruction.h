@@ -49,6 +49,7 @@ struct ReconstructionReport {
     std::size_t small_holes_filled = 0;      ///< D-28: boundary loops of at most 5 edges closed
     /// D-30 (HRsR): triangles removed for an edge no RsR candidate could be (over a hole).
     std::size_t unsampled_triangles_removed = 0;
+    std::size_t border_notches_closed = 0; ///< D-34 (HRsR): ears over notches of the border
     MeshStats mesh;
     std::vector<std::pair<std::string, double>>
         timings; ///< (phase, seconds), summed over components

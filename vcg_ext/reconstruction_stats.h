@@ -34,7 +34,9 @@ struct ReexpansionStats {
     std::size_t failed_no_pair = 0;    ///< no split pair: latent aliased to the kept vertex (D-16)
     std::size_t unresolved_crossings = 0; ///< splits done with a crossing left
     std::size_t crossing_flips = 0, triangles_removed = 0, improvement_flips = 0;
-    std::size_t merged_by_l_min = 0; ///< latent points aliased because of l_min
+    std::size_t merged_by_l_min = 0;       ///< latent points aliased because of l_min
+    std::size_t border_slivers_peeled = 0; ///< D-34: coarse border slivers removed first
+    std::size_t border_splits = 0;         ///< D-34: splits that put the new vertex on the border
     bool stopped_at_l_min = false;
 };
 

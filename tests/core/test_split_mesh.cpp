@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 namespace hrsr::reexpand {
 namespace {
 
@@ -100,6 +102,49 @@ TEST(SplitMesh, BoundaryVertexInEveryGapPosition) {
     split_every_pair(h, 1);                     // rim vertex: valence 3, one gap
     h.triangles.erase(h.triangles.begin() + 2); // now the centre is a boundary vertex too
     split_every_pair(h, 0);
+}
+
+// D-34: a border split leaves out the new triangle next to the gap: (V, E, F) change by
+// (+1, +2, +1), the border gains an edge, c' lies on it between c and the spoke next to the gap.
+TEST(SplitMesh, BorderSplitPutsTheNewVertexOnTheBorder) {
+    const Fixture h = hexagon();
+    const SplitMesh probe(h.positions, h.triangles, 64, 64);
+    const Star rim = probe.star(1); // 0, 6, 2 with the gap from 6 round to 2
+    ASSERT_EQ(rim.wedges[1], nullptr);
+    using B = SplitMesh::BorderSplit;
+    // Out: the wedge before b (= 2) is the gap; In: the wedge after a (= 6) is.
+    for (const auto& [a, b, omit, beside] :
+         {std::tuple{6u, 2u, B::Out, 2u}, std::tuple{0u, 2u, B::Out, 2u},
+          std::tuple{6u, 0u, B::In, 6u}, std::tuple{6u, 2u, B::In, 6u}}) {
+        SplitMesh m(h.positions, h.triangles, 64, 64);
+        const Counts before = check(m);
+        const std::uint32_t c2 = m.split(1, m.star(1), a, b, Vec3(1.2, 0.1, 0), omit);
+        const Counts after = check(m);
+        EXPECT_EQ(after.v, before.v + 1);
+        EXPECT_EQ(after.e, before.e + 2);
+        EXPECT_EQ(after.f, before.f + 1);
+        EXPECT_EQ(after.loops, before.loops);
+        EXPECT_EQ(after.euler, before.euler);
+        EXPECT_EQ(m.border_loop_edges(1, 16), 7u); // the hexagon's six rim edges and one more
+        const Star s2 = m.star(c2), s1 = m.star(1);
+        EXPECT_TRUE(s2.boundary);
+        EXPECT_TRUE(s1.boundary);
+        EXPECT_NE(std::find(s2.neighbours.begin(), s2.neighbours.end(), beside),
+                  s2.neighbours.end());
+    }
+    // The triangle next to the gap must be the one left out.
+    SplitMesh m(h.positions, h.triangles, 64, 64);
+    EXPECT_THROW(m.split(1, m.star(1), 6, 0, Vec3(1.2, 0.1, 0), B::Out), std::logic_error);
+}
+
+TEST(SplitMesh, BorderLoopEdgesCountsUpToTheLimit) {
+    Fixture h = hexagon();
+    const SplitMesh disc(h.positions, h.triangles, 16, 16);
+    EXPECT_EQ(disc.border_loop_edges(1, 6), 6u);
+    EXPECT_EQ(disc.border_loop_edges(1, 5), 6u); // more than the limit: limit + 1
+    h.triangles.erase(h.triangles.begin() + 2);  // the centre now has a gap too: the loop runs
+    const SplitMesh notched(h.positions, h.triangles, 16, 16); // 1 2 3 0 4 5 6: seven edges
+    EXPECT_EQ(notched.border_loop_edges(0, 10), 7u);
 }
 
 TEST(SplitMesh, CapacityIsNeverExceeded) {

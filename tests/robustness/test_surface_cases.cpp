@@ -27,16 +27,9 @@ void expect_no_fold_left(const Attempt& a, const PointSet& in, const std::string
     EXPECT_TRUE(self_intersecting_pairs(written, a.mesh.triangles, {}).empty()) << context;
 }
 
-// On the planar grids every point is a vertex but those D-32 took out of folds.
-void expect_every_point_but_folds(const Attempt& a, const PointSet& in,
-                                  const std::string& context) {
-    EXPECT_EQ(a.report.referenced_input_points + a.report.dropped_fold.size(), in.size())
-        << context;
-}
-
 // A flat grid (a disc with boundary): one component, one boundary loop, χ = 1, every point.
-// RsR here; HRsR folds the grid's straight border over itself (DISABLED_ below), so only the
-// guarantees hold for it.
+// HRsR since D-34 (border slivers peeled, border splits, notches closed): before it folded the
+// grid's straight border over itself and D-32 cut the strip out (docs/STATUS.md, gap 15).
 void expect_planar_disc(const PointSet& grid, Method m) {
     for (bool normals : {true, false}) {
         const PointSet& in = normals ? grid : testing::without_normals(grid);
@@ -51,21 +44,7 @@ void expect_planar_disc(const PointSet& grid, Method m) {
 }
 
 TEST(SurfaceCases, PlanarGridIsADiscWithOneBoundaryLoop) {
-    const PointSet grid = testing::sample_plane(40);
-    expect_planar_disc(grid, Method::Rsr);
-    for (bool normals : {true, false}) {
-        const PointSet& in = normals ? grid : testing::without_normals(grid);
-        const Attempt a = attempt(in, Method::Hrsr);
-        expect_no_fold_left(a, in, "hrsr");
-        expect_every_point_but_folds(a, in, "hrsr");
-    }
-}
-
-// docs/STATUS.md, known gap 15: HRsR's re-expansion folds a strip along a straight border over
-// itself (slivers of the coarse mesh along the border flip as their vertices move to their
-// input points), and D-32 cuts the strip out: points dropped, pieces split off.
-TEST(SurfaceCasesKnownFailure, DISABLED_HrsrPlanarGridIsADiscWithOneBoundaryLoop) {
-    expect_planar_disc(testing::sample_plane(40), Method::Hrsr);
+    for (Method m : kMethods) expect_planar_disc(testing::sample_plane(40), m);
 }
 
 PointSet two_sheets(double gap, bool facing_away) {
@@ -80,9 +59,8 @@ PointSet two_sheets(double gap, bool facing_away) {
 // Two sheets 0.5 spacings apart. With normals pointing away from each other (the two sides of a
 // thin plate) each sheet is its own disc; with parallel normals the input cannot tell the sheets
 // apart and one manifold sheet over all points comes out. Both are flagged or valid, never broken.
-// HRsR: as in the planar grid, its folded borders are cut out (known gap 15).
-void expect_two_sheets(Method m) {
-    {
+TEST(SurfaceCases, TwoSheetsCloserThanTheSpacing) {
+    for (Method m : kMethods) {
         const PointSet plate = two_sheets(0.5, true);
         const Attempt a = attempt(plate, m);
         expect_no_fold_left(a, plate, name(m));
@@ -102,27 +80,11 @@ void expect_two_sheets(Method m) {
     }
 }
 
-TEST(SurfaceCases, TwoSheetsCloserThanTheSpacing) {
-    expect_two_sheets(Method::Rsr);
-    for (bool facing_away : {true, false}) {
-        const PointSet sheets = two_sheets(0.5, facing_away);
-        const Attempt a = attempt(sheets, Method::Hrsr);
-        expect_no_fold_left(a, sheets, "hrsr");
-        expect_every_point_but_folds(a, sheets, "hrsr");
-        if (facing_away) {
-            EXPECT_TRUE(a.has_warning("closer than the point spacing"));
-        }
-    }
-}
-
-TEST(SurfaceCasesKnownFailure, DISABLED_HrsrTwoSheetsCloserThanTheSpacing) {
-    expect_two_sheets(Method::Hrsr);
-}
-
 // Two planes crossing at right angles: the mesh stays manifold (a point where sheets touch gets a
 // vertex copy per sheet) and keeps nearly every point. Where triangles of one plane cross the
-// other, D-32 takes points out: only near the line where the planes cross (and, with HRsR, along
-// the folded borders of known gap 15), and no intersecting pair is left.
+// other, D-32 takes points out: with RsR only near the line where the planes cross; with HRsR
+// (r_v 98.97 % in session 13) also two points 4.5 and 10.5 spacings from it. No intersecting
+// pair is left.
 TEST(SurfaceCases, CrossingPlanes) {
     PointSet s = testing::sample_plane(40), other = testing::sample_plane(40, 1.0, 9);
     for (std::size_t i = 0; i < other.size(); ++i) {
@@ -135,7 +97,7 @@ TEST(SurfaceCases, CrossingPlanes) {
         const Attempt a = attempt(s, m);
         expect_valid_mesh(a, s, name(m));
         expect_no_fold_left(a, s, name(m));
-        EXPECT_GT(a.report.vertex_reference_ratio, m == Method::Rsr ? 0.99 : 0.97) << name(m);
+        EXPECT_GT(a.report.vertex_reference_ratio, m == Method::Rsr ? 0.99 : 0.98) << name(m);
         EXPECT_GE(a.report.mesh.components.size(), 2u) << name(m);
         if (m == Method::Rsr)
             for (std::uint32_t i : a.report.dropped_fold) {

@@ -3,9 +3,11 @@
 #include "hrsr/crossings.h"
 #include "hrsr/local_flips.h"
 #include "hrsr/split_choice.h"
+#include "mesh/small_holes_fill.h"
 #include "mesh/split_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hrsr {
 
@@ -57,6 +59,37 @@ private:
     std::vector<std::vector<std::uint32_t>> lists_;
 };
 
+// D-34: RsR on the coarse cloud closes a straight border with long edges over slivers whose apex
+// lies just inside (a vertex split never lengthens the border, so the input's border points
+// between their ends would stay interior, and fold). Peel them first: a triangle on a border
+// loop longer than D-28 closes whose angle opposite the border edge is kBorderSliverDegrees or
+// more goes, if its apex is interior (so every vertex stays manifold and keeps a face); repeated,
+// since the apex's new border edges may be slivers too. Returns the triangles peeled.
+std::size_t peel_border_slivers(SplitMesh& mesh) {
+    const double max_cos = std::cos(constants::kBorderSliverDegrees * M_PI / 180.0);
+    std::size_t peeled = 0;
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (SFace* f : mesh.live_faces())
+            for (int z = 0; z < 3; ++z) {
+                if (f->FFp(z) != f) continue; // not a border edge
+                const std::uint32_t u = mesh.vertex_of(f, z), w = mesh.vertex_of(f, (z + 1) % 3),
+                                    x = mesh.vertex_of(f, (z + 2) % 3);
+                const Vec3 eu = mesh.position(u) - mesh.position(x),
+                           ew = mesh.position(w) - mesh.position(x);
+                const double lengths = eu.Norm() * ew.Norm();
+                if (lengths <= 0 || eu.dot(ew) > max_cos * lengths || mesh.star(x).boundary ||
+                    mesh.border_loop_edges(u, kMaxFilledLoop) <= kMaxFilledLoop)
+                    continue;
+                mesh.remove_face(f);
+                ++peeled;
+                changed = true;
+                break;
+            }
+    }
+    return peeled;
+}
+
 class Replayer {
 public:
     Replayer(const ReexpansionInput& input, ReexpansionObserver* observer)
@@ -70,6 +103,8 @@ public:
         alias_ = IndexVector<PointIndex, PointIndex>(input.points.size(), ReexpandedMesh::kNoNode);
         for (PointIndex node : input.coarse.vertex_node) alias_[node] = node;
     }
+
+    std::size_t peel_border_slivers() { return hrsr::peel_border_slivers(mesh_); }
 
     // Aliasing (D-16): b is represented by a's vertices from now on.
     void alias(const CollapseRecord& r) {
@@ -99,13 +134,19 @@ public:
             if (mesh_.isolated(c)) continue;
             Star& star = star_; // reused: no allocation per split
             mesh_.star(c, star);
-            const SplitChoice choice = choose_split(mesh_, star, r.active_before, r.latent_before);
+            // D-34: a small hole of the coarse mesh keeps its few edges, for D-28 to close.
+            const bool long_border =
+                star.boundary && mesh_.border_loop_edges(c, kMaxFilledLoop) > kMaxFilledLoop;
+            const SplitChoice choice =
+                choose_split(mesh_, star, r.active_before, r.latent_before, long_border);
             if (!choice.found) continue;
-            const std::uint32_t c2 = mesh_.split(c, star, choice.a, choice.b, r.latent_before);
+            const std::uint32_t c2 =
+                mesh_.split(c, star, choice.a, choice.b, r.latent_before, choice.omit);
             vertex_node_.push_back(PointIndex(r.latent));
             vertices_of_.set(r.latent, c2);
             alias_[PointIndex(r.latent)] = PointIndex(r.latent);
             ++stats.replayed;
+            stats.border_splits += choice.omit != SplitMesh::BorderSplit::None;
             if (unresolved) ++stats.unresolved_crossings;
             stats.improvement_flips += improve_around(mesh_, c2, options_);
             if (observer_)
@@ -125,7 +166,8 @@ public:
     }
 
     ReexpandedMesh take_result() {
-        return {std::move(vertex_node_), mesh_.triangles(), std::move(alias_)};
+        return {std::move(vertex_node_), mesh_.triangles(), mesh_.border_edges(),
+                std::move(alias_)};
     }
 
 private:
@@ -150,6 +192,7 @@ ReexpandedMesh replay_collapses(ReexpansionInput input, const Execution& exec,
     validate(options);
     stats.records = records.size();
     Replayer replayer(input, observer);
+    stats.border_slivers_peeled = replayer.peel_border_slivers();
     if (exec.progress) exec.progress->begin("re-expansion");
     for (std::size_t k = records.size(); k-- > 0;) {
         const CollapseRecord& r = records[k];

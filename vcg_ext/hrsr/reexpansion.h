@@ -16,6 +16,8 @@ namespace hrsr {
 struct ReexpandedMesh {
     IndexVector<VertexIndex, PointIndex> vertex_node; ///< the node (point) it stands for
     std::vector<Triangle> triangles;
+    /// The border edges a → b as the triangles holding them run (D-34 closes notches on them).
+    std::vector<std::array<std::uint32_t, 2>> border;
     /// Per node: the node whose vertex represents it (itself if it has its own vertex; kNoNode if
     /// dropped).
     IndexVector<PointIndex, PointIndex> alias;

@@ -1,5 +1,7 @@
 #include "hrsr/split_choice.h"
 
+#include "geometry.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -119,22 +121,27 @@ struct SplitTerms {
     }
 
     // Chains of triangles around the two split vertices; consecutive ones share a spoke. h_in
-    // comes from spoke i, h_out goes to spoke j.
-    Score score(std::size_t i, std::size_t j) const {
+    // comes from spoke i, h_out goes to spoke j. A border split (D-34) leaves out one of the new
+    // triangles, and its terms.
+    Score score(std::size_t i, std::size_t j,
+                SplitMesh::BorderSplit omit = SplitMesh::BorderSplit::None) const {
         const std::size_t d = wedges->size();
+        const bool with_out = omit != SplitMesh::BorderSplit::Out;
+        const bool with_in = omit != SplitMesh::BorderSplit::In;
         Score s;
         auto add = [&](const Joint& joint) {
             s.energy += joint.energy;
             s.worst_dihedral = std::max(s.worst_dihedral, joint.dihedral);
         };
-        const Vec3& n_out = spokes.out_normal[j];
-        const Vec3& n_in = spokes.in_normal[i];
-        s.energy += spokes.out_angle[j] + spokes.in_angle[i];
-        add(Joint(n_in, n_out, new_edge)); // D-18: the true shared edge
+        const Vec3* n_out = with_out ? &spokes.out_normal[j] : nullptr;
+        const Vec3* n_in = with_in ? &spokes.in_normal[i] : nullptr;
+        if (n_out) s.energy += spokes.out_angle[j];
+        if (n_in) s.energy += spokes.in_angle[i];
+        if (n_in && n_out) add(Joint(*n_in, *n_out, new_edge)); // D-18: the true shared edge
         // side(from, to): the wedges from spoke `from` counter-clockwise to spoke `to`, between
-        // the new triangles with normals `first` (at `from`) and `last` (at `to`).
-        auto side = [&](const Fan& fan, std::size_t from, std::size_t to, const Vec3& first,
-                        const Vec3& last) {
+        // the new triangles with normals `first` (at `from`) and `last` (at `to`), where present.
+        auto side = [&](const Fan& fan, std::size_t from, std::size_t to, const Vec3* first,
+                        const Vec3* last) {
             bool have_previous = true;
             for (std::size_t w = from; w != to; w = (w + 1) % d) {
                 if (!(*wedges)[w]) { // the boundary gap: no face, no adjacency across it (D-18)
@@ -142,10 +149,12 @@ struct SplitTerms {
                     continue;
                 }
                 s.energy += fan.angle[w];
-                if (have_previous)
-                    add(w == from ? Joint(first, fan.normal[w], fan.spoke_length[w])
-                                  : fan.joint[w]);
-                if ((w + 1) % d == to) add(Joint(fan.normal[w], last, fan.spoke_length[to]));
+                if (w != from && have_previous)
+                    add(fan.joint[w]);
+                else if (w == from && first)
+                    add(Joint(*first, fan.normal[w], fan.spoke_length[w]));
+                if ((w + 1) % d == to && last)
+                    add(Joint(fan.normal[w], *last, fan.spoke_length[to]));
                 have_previous = true;
             }
         };
@@ -155,10 +164,39 @@ struct SplitTerms {
     }
 };
 
+// D-34: where the new vertex lies in c's boundary gap (seen from c in the plane of c's fan), a
+// border split may put it on the border: next to the spoke after the gap (`Out`) when it is
+// nearer that spoke's side of the gap, next to the spoke before it (`In`) otherwise.
+SplitMesh::BorderSplit border_side(const Star& star, const std::vector<Vec3>& q, const Vec3& p_old,
+                                   const Vec3& p_new, const Vec3& fan_normal) {
+    const std::size_t d = q.size();
+    const double length = fan_normal.Norm();
+    if (!star.boundary || length <= 0) return SplitMesh::BorderSplit::None;
+    std::size_t gap = 0;
+    while (gap < d && star.wedges[gap]) ++gap;
+    if (gap == d) return SplitMesh::BorderSplit::None;
+    const TangentFrame f = tangent_frame(fan_normal / length);
+    const auto angle = [&](const Vec3& p) {
+        const Vec3 e = p - p_old;
+        return std::atan2(e.dot(f.t2), e.dot(f.t1));
+    };
+    const auto ccw = [](double from, double to) { // in [0, 2π)
+        double a = to - from;
+        while (a < 0) a += 2 * M_PI;
+        while (a >= 2 * M_PI) a -= 2 * M_PI;
+        return a;
+    };
+    const double start = angle(q[gap]);
+    const double width = ccw(start, angle(q[(gap + 1) % d]));
+    const double at = ccw(start, angle(p_new));
+    if (at >= width) return SplitMesh::BorderSplit::None;
+    return at >= 0.5 * width ? SplitMesh::BorderSplit::Out : SplitMesh::BorderSplit::In;
+}
+
 } // namespace
 
 SplitChoice choose_split(const SplitMesh& mesh, const Star& star, const Vec3& p_old,
-                         const Vec3& p_new) {
+                         const Vec3& p_new, bool on_long_border) {
     const std::size_t d = star.neighbours.size();
     SplitChoice best, best_guarded;
     if (d < 2) return best;
@@ -168,15 +206,24 @@ SplitChoice choose_split(const SplitMesh& mesh, const Star& star, const Vec3& p_
     q.clear();
     for (std::uint32_t v : star.neighbours) q.push_back(mesh.position(v));
     terms.assign(p_old, p_new, q, star.wedges);
+    Vec3 fan_normal(0, 0, 0);
+    for (const Vec3& n : terms.old_fan.normal) fan_normal += n;
+    auto consider = [&](std::size_t i, std::size_t j, SplitMesh::BorderSplit omit) {
+        const Score s = terms.score(i, j, omit);
+        const SplitChoice candidate{true, star.neighbours[i], star.neighbours[j], s.energy, omit};
+        if (!best.found || s.energy < best.energy) best = candidate;
+        if (s.worst_dihedral < constants::kDihedralGuard &&
+            (!best_guarded.found || s.energy < best_guarded.energy))
+            best_guarded = candidate;
+    };
+    using B = SplitMesh::BorderSplit;
+    const B side = on_long_border ? border_side(star, q, p_old, p_new, fan_normal) : B::None;
     for (std::size_t i = 0; i < d; ++i)
         for (std::size_t j = 0; j < d; ++j) {
             if (i == j) continue;
-            const Score s = terms.score(i, j);
-            const SplitChoice candidate{true, star.neighbours[i], star.neighbours[j], s.energy};
-            if (!best.found || s.energy < best.energy) best = candidate;
-            if (s.worst_dihedral < constants::kDihedralGuard &&
-                (!best_guarded.found || s.energy < best_guarded.energy))
-                best_guarded = candidate;
+            consider(i, j, B::None);
+            if (side == B::Out && !star.wedges[(j + d - 1) % d]) consider(i, j, B::Out);
+            if (side == B::In && !star.wedges[i]) consider(i, j, B::In);
         }
     // Dihedral guard: avoid a fold-back when some candidate has none.
     return best_guarded.found ? best_guarded : best;

@@ -33,6 +33,14 @@ void attach(SFace* f, int z, SFace* g, int w) {
     g->FFi(w) = char(z);
 }
 
+// attach() where either face may be missing: the other's edge is then a border.
+void link(SFace* f, int z, SFace* g, int w) {
+    if (f)
+        attach(f, z, g, w);
+    else if (g)
+        attach(g, w, nullptr, -1);
+}
+
 // Edge index of {u, v} in f (either direction), or -1.
 int edge_of(const SFace* f, const SVertex* u, const SVertex* v) {
     for (int z = 0; z < 3; ++z)
@@ -190,7 +198,7 @@ void SplitMesh::star(std::uint32_t vi, Star& s) const {
 }
 
 std::uint32_t SplitMesh::split(std::uint32_t ci, const Star& s, std::uint32_t ai, std::uint32_t bi,
-                               const Vec3& position) {
+                               const Vec3& position, BorderSplit omit) {
     const std::size_t d = s.neighbours.size();
     const std::size_t i =
         std::find(s.neighbours.begin(), s.neighbours.end(), ai) - s.neighbours.begin();
@@ -202,15 +210,17 @@ std::uint32_t SplitMesh::split(std::uint32_t ci, const Star& s, std::uint32_t ai
         throw std::logic_error("split mesh: capacity exhausted");
 
     SVertex* c = &mesh_.vert[ci];
-    auto vn = vcg::tri::Allocator<SMesh>::AddVertices(mesh_, 1);
-    SVertex* c2 = &*vn;
-    c2->P() = position;
-    const std::uint32_t c2i = index(c2);
     // Faces in the sweep b → a (wedges j … i−1) move to c'. The faces next to the spokes:
     SFace* keep_b = s.wedges[(j + d - 1) % d]; // wedge before b: stays with c
     SFace* move_b = s.wedges[j];               // wedge after b: moves
     SFace* move_a = s.wedges[(i + d - 1) % d]; // wedge before a: moves
     SFace* keep_a = s.wedges[i];               // wedge after a: stays
+    if ((omit == BorderSplit::Out && keep_b) || (omit == BorderSplit::In && keep_a))
+        throw std::logic_error("split mesh: a border split leaves out a triangle next to the gap");
+    auto vn = vcg::tri::Allocator<SMesh>::AddVertices(mesh_, 1);
+    SVertex* c2 = &*vn;
+    c2->P() = position;
+    const std::uint32_t c2i = index(c2);
     const int keep_b_edge = keep_b ? edge_of(keep_b, c, &mesh_.vert[bi]) : -1;
     const int move_b_edge = move_b ? edge_of(move_b, c, &mesh_.vert[bi]) : -1;
     const int move_a_edge = move_a ? edge_of(move_a, c, &mesh_.vert[ai]) : -1;
@@ -218,20 +228,44 @@ std::uint32_t SplitMesh::split(std::uint32_t ci, const Star& s, std::uint32_t ai
     for (std::size_t w = j; w != i; w = (w + 1) % d)
         if (SFace* f = s.wedges[w]) f->V(corner_of(f, c)) = c2;
 
-    auto fn = vcg::tri::Allocator<SMesh>::AddFaces(mesh_, 2);
-    SFace* t_out = &*fn;      // (c', c, b)
-    SFace* t_in = &*(fn + 1); // (c, c', a)
-    t_out->V(0) = c2, t_out->V(1) = c, t_out->V(2) = &mesh_.vert[bi];
-    t_in->V(0) = c, t_in->V(1) = c2, t_in->V(2) = &mesh_.vert[ai];
-    attach(t_out, 0, t_in, 0);             // {c', c}
-    attach(t_out, 1, keep_b, keep_b_edge); // {c, b}
-    attach(t_out, 2, move_b, move_b_edge); // {b, c'}
-    attach(t_in, 1, move_a, move_a_edge);  // {c', a}
-    attach(t_in, 2, keep_a, keep_a_edge);  // {a, c}
-    set_face_of(t_out);
-    set_face_of(t_in);
+    auto fn = vcg::tri::Allocator<SMesh>::AddFaces(mesh_, omit == BorderSplit::None ? 2 : 1);
+    SFace* t_out = omit == BorderSplit::Out ? nullptr : &*fn;                      // (c', c, b)
+    SFace* t_in = omit == BorderSplit::In ? nullptr : (t_out ? &*(fn + 1) : &*fn); // (c, c', a)
+    if (t_out) {
+        t_out->V(0) = c2, t_out->V(1) = c, t_out->V(2) = &mesh_.vert[bi];
+        attach(t_out, 1, keep_b, keep_b_edge); // {c, b}
+    }
+    if (t_in) {
+        t_in->V(0) = c, t_in->V(1) = c2, t_in->V(2) = &mesh_.vert[ai];
+        attach(t_in, 2, keep_a, keep_a_edge); // {a, c}
+    }
+    link(t_out, 0, t_in, 0);             // {c', c}
+    link(t_out, 2, move_b, move_b_edge); // {b, c'}
+    link(t_in, 1, move_a, move_a_edge);  // {c', a}
+    if (t_out) set_face_of(t_out);
+    if (t_in) set_face_of(t_in);
     for (std::uint32_t x : {ci, c2i, ai, bi}) HRSR_CHECK_AROUND(x, "a split");
     return c2i;
+}
+
+std::size_t SplitMesh::border_loop_edges(std::uint32_t v, std::size_t limit) const {
+    // The border neighbour after the gap of x (the spoke counter-clockwise after the null wedge).
+    Star s; // reused along the loop
+    const auto next = [&](std::uint32_t x, std::uint32_t& after) {
+        star(x, s);
+        std::size_t gaps = 0, gap = 0;
+        for (std::size_t k = 0; k < s.wedges.size(); ++k)
+            if (!s.wedges[k]) ++gaps, gap = k;
+        if (gaps != 1) return false;
+        after = s.neighbours[(gap + 1) % s.neighbours.size()];
+        return true;
+    };
+    std::uint32_t x = v;
+    for (std::size_t edges = 1; edges <= limit; ++edges) {
+        if (!next(x, x)) return limit + 1;
+        if (x == v) return edges;
+    }
+    return limit + 1;
 }
 
 template <class Visit>
@@ -351,6 +385,15 @@ std::vector<Triangle> SplitMesh::triangles() const {
     out.reserve(std::size_t(mesh_.fn));
     for (const SFace& f : mesh_.face)
         if (!f.IsD()) out.push_back({vertex_of(&f, 0), vertex_of(&f, 1), vertex_of(&f, 2)});
+    return out;
+}
+
+std::vector<std::array<std::uint32_t, 2>> SplitMesh::border_edges() const {
+    std::vector<std::array<std::uint32_t, 2>> out;
+    for (const SFace& f : mesh_.face)
+        if (!f.IsD())
+            for (int z = 0; z < 3; ++z)
+                if (is_border(&f, z)) out.push_back({vertex_of(&f, z), vertex_of(&f, (z + 1) % 3)});
     return out;
 }
 

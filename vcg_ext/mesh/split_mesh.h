@@ -8,6 +8,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -62,7 +63,21 @@ public:
     }
     /// The same with c's star given: `s` must be star(c), the mesh unchanged since.
     std::uint32_t split(std::uint32_t c, const Star& s, std::uint32_t a, std::uint32_t b,
-                        const Vec3& position);
+                        const Vec3& position) {
+        return split(c, s, a, b, position, BorderSplit::None);
+    }
+
+    /// D-34: a split at the border may leave out the new triangle that lies next to c's
+    /// boundary gap, (c', c, b) when the wedge before b is the gap (`Out`) or (c, c', a) when the
+    /// wedge after a is (`In`): c' then lies on the border between c and that spoke, and the
+    /// border gains an edge. (V, E, F) change by (+1, +2, +1).
+    enum class BorderSplit { None, Out, In };
+    std::uint32_t split(std::uint32_t c, const Star& s, std::uint32_t a, std::uint32_t b,
+                        const Vec3& position, BorderSplit omit);
+
+    /// The number of edges of the border loop through v (a border vertex with one gap), when
+    /// it is at most `limit`; limit + 1 otherwise (also for a vertex on several loops).
+    std::size_t border_loop_edges(std::uint32_t v, std::size_t limit) const;
 
     /// Whether u and w share an edge (a boundary-safe walk around u).
     bool adjacent(std::uint32_t u, std::uint32_t w) const;
@@ -87,6 +102,8 @@ public:
     std::uint32_t vertex_of(const SFace* f, int k) const { return index(f->cV(k)); }
     /// The live triangles, in face order.
     std::vector<Triangle> triangles() const;
+    /// The border edges a → b as the faces holding them run (no face has b → a), in face order.
+    std::vector<std::array<std::uint32_t, 2>> border_edges() const;
     /// The live faces, in the same order as triangles().
     std::vector<SFace*> live_faces();
     /// A face's position in the face storage (stable: faces never move).
