@@ -134,11 +134,8 @@ public:
             if (mesh_.isolated(c)) continue;
             Star& star = star_; // reused: no allocation per split
             mesh_.star(c, star);
-            // D-34: a small hole of the coarse mesh keeps its few edges, for D-28 to close.
-            const bool long_border =
-                star.boundary && mesh_.border_loop_edges(c, kMaxFilledLoop) > kMaxFilledLoop;
             const SplitChoice choice =
-                choose_split(mesh_, star, r.active_before, r.latent_before, long_border);
+                choose_split(mesh_, c, star, r.active_before, r.latent_before);
             if (!choice.found) continue;
             const std::uint32_t c2 =
                 mesh_.split(c, star, choice.a, choice.b, r.latent_before, choice.omit);

@@ -1,6 +1,7 @@
 #include "hrsr/split_choice.h"
 
 #include "geometry.h"
+#include "mesh/small_holes_fill.h"
 
 #include <algorithm>
 #include <cmath>
@@ -195,8 +196,8 @@ SplitMesh::BorderSplit border_side(const Star& star, const std::vector<Vec3>& q,
 
 } // namespace
 
-SplitChoice choose_split(const SplitMesh& mesh, const Star& star, const Vec3& p_old,
-                         const Vec3& p_new, bool on_long_border) {
+SplitChoice choose_split(const SplitMesh& mesh, std::uint32_t c, const Star& star,
+                         const Vec3& p_old, const Vec3& p_new) {
     const std::size_t d = star.neighbours.size();
     SplitChoice best, best_guarded;
     if (d < 2) return best;
@@ -217,7 +218,10 @@ SplitChoice choose_split(const SplitMesh& mesh, const Star& star, const Vec3& p_
             best_guarded = candidate;
     };
     using B = SplitMesh::BorderSplit;
-    const B side = on_long_border ? border_side(star, q, p_old, p_new, fan_normal) : B::None;
+    // The border walk only where a border split could be taken at all.
+    B side = border_side(star, q, p_old, p_new, fan_normal);
+    if (side != B::None && mesh.border_loop_edges(c, kMaxFilledLoop) <= kMaxFilledLoop)
+        side = B::None;
     for (std::size_t i = 0; i < d; ++i)
         for (std::size_t j = 0; j < d; ++j) {
             if (i == j) continue;

@@ -17,9 +17,9 @@ struct SplitChoice {
 /// vertex at p_new by E = E_D + w · E_A (w = constants::kMinAngleWeight) and applies the dihedral
 /// guard. Wedges that are not faces (the boundary gap) are not scored (D-18). Ties go to the first
 /// pair in circulation order (D-10).
-/// With `on_long_border` (c lies on a border loop longer than D-28 closes), border splits
-/// (D-34) are candidates too.
-SplitChoice choose_split(const SplitMesh& mesh, const Star& star, const Vec3& p_old,
-                         const Vec3& p_new, bool on_long_border = false);
+/// Where c lies on a border loop longer than D-28 closes and p_new in its gap, border splits
+/// (D-34) are candidates too: a small hole of the coarse mesh keeps its few edges.
+SplitChoice choose_split(const SplitMesh& mesh, std::uint32_t c, const Star& star,
+                         const Vec3& p_old, const Vec3& p_new);
 
 } // namespace hrsr::reexpand
