@@ -279,8 +279,7 @@ private:
             // can_flip needs the whole neighbourhood of the edge's endpoints and of the corners
             // the new edge joins.
             if (!region_.complete(face, 0) || !region_.complete(face, 1) ||
-                !region_.complete(face, 2) || !region_.complete(across, (face->FFi(z) + 2) % 3) ||
-                !mesh_.can_flip(face, z))
+                !region_.complete(face, 2) || !region_.complete(across, (face->FFi(z) + 2) % 3))
                 continue;
             // f = (u, w, x) holds the edge as u→w; the face across holds w→u and y.
             const Triangle tf = geometry_.triangle(f), tg = geometry_.triangle(g);
@@ -288,9 +287,11 @@ private:
             const std::uint32_t y =
                 representative_[region_.global_vertex(across, (face->FFi(z) + 2) % 3)].value();
             const Triangle nf{x, u, y}, ng{y, w, x}; // the flipped pair, wound the same way
-            if (geometry_.degenerate(nf) || geometry_.degenerate(ng)) continue;
+            // The geometric tests before the topological walks of can_flip.
             const double old_fold = geometry_.normal(tf).dot(geometry_.normal(tg));
-            if (geometry_.normal(nf).dot(geometry_.normal(ng)) < std::min(old_fold, 0.0)) continue;
+            if (geometry_.normal(nf).dot(geometry_.normal(ng)) < std::min(old_fold, 0.0) ||
+                geometry_.degenerate(nf) || geometry_.degenerate(ng) || !mesh_.can_flip(face, z))
+                continue;
             if (!searched) {
                 near(quads_box(face), kNoFace, kNoFace);
                 searched = true;

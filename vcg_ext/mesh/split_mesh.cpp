@@ -294,15 +294,14 @@ void SplitMesh::for_each_face_any_order(std::uint32_t vi, Visit&& visit) const {
     throw std::logic_error("split mesh: a vertex star does not close");
 }
 
-std::size_t SplitMesh::valence(std::uint32_t v, bool& boundary) const {
+bool SplitMesh::interior_with_three_edges(std::uint32_t v) const {
     std::size_t faces = 0;
-    boundary = false;
+    bool boundary = false;
     for_each_face_any_order(v, [&](SFace* f, int k) {
-        ++faces;
-        boundary = boundary || is_border(f, (k + 2) % 3) || is_border(f, k);
-        return false;
+        boundary = is_border(f, (k + 2) % 3) || is_border(f, k);
+        return boundary || ++faces > 3;
     });
-    return boundary ? faces + 1 : faces;
+    return !boundary && faces <= 3;
 }
 
 bool SplitMesh::find_undirected_edge(std::uint32_t u, std::uint32_t w, SFace*& face, int& z) const {
@@ -347,11 +346,8 @@ bool SplitMesh::can_flip(SFace* f, int z) const {
     if (adjacent(vertex_of(f, (z + 2) % 3), vertex_of(f->FFp(z), (f->FFi(z) + 2) % 3)))
         return false;
     // An interior endpoint with 3 edges would drop to 2 (ALGORITHM.md §8.6).
-    for (int end = 0; end < 2; ++end) {
-        bool boundary = false;
-        if (valence(vertex_of(f, (z + end) % 3), boundary) < 4 && !boundary) return false;
-    }
-    return true;
+    return !interior_with_three_edges(vertex_of(f, z)) &&
+           !interior_with_three_edges(vertex_of(f, (z + 1) % 3));
 }
 
 void SplitMesh::flip(SFace* f, int z) {

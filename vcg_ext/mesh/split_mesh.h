@@ -115,8 +115,9 @@ private:
     void link_faces(std::size_t vertex_count, const std::vector<Triangle>& triangles);
     [[noreturn]] static void throw_not_manifold();
     void set_face_of(SFace* f);
-    /// Number of edges at v and whether it lies on the boundary, by walking its faces.
-    std::size_t valence(std::uint32_t v, bool& boundary) const;
+    /// Whether v is an interior vertex with at most three edges, walking no more than four of
+    /// its faces (most vertices have more).
+    bool interior_with_three_edges(std::uint32_t v) const;
     /// Calls visit(face, corner) for the faces around v, in no particular order, until it
     /// returns true.
     template <class Visit>
