@@ -1,5 +1,6 @@
 // D-32: what the flips leave is cut out; the written mesh has no intersecting pair.
 #include "fold_fixtures.h"
+#include "io/mesh_reader.h"
 #include "io/point_set_reader.h"
 #include "mesh/face_quality.h"
 #include "mesh/fold_removal.h"
@@ -131,6 +132,28 @@ TEST(FoldRemoval, SameResultOnOneAndTwoThreads) {
     const Removed one = remove(m, 1), two = remove(m, 2);
     EXPECT_EQ(one.triangles, two.triangles);
     EXPECT_EQ(one.removal.vertex_source, two.removal.vertex_source);
+}
+
+// A patch of the lion's HRsR mesh before the fold repair (tests/data/folds/README.md): two
+// faces cut next to each other leave one four-edge hole that no single cut face's closing
+// (close_cut) fits; the closing of small cut holes fills it across. Before it, the boundary went
+// 89 -> 86 (that hole open); now 89 -> 82.
+TEST(FoldRemoval, AHoleOfAdjacentCutsClosesAgain) {
+    const io::MeshFile patch =
+        io::read_mesh(std::string(HRSR_TEST_DATA) + "/folds/lion_patch_adjacent_cuts.ply");
+    const TestMesh m{patch.points.positions, patch.triangles};
+    Removed r;
+    r.triangles = m.triangles;
+    FoldSearch search(m.positions, r.triangles, {});
+    repair_folds(search, r.triangles, RsrOptions{}.fold_repair_rounds);
+    r.removal = remove_folds(search, patch.points.normals, r.triangles);
+    for (std::uint32_t v : r.removal.vertex_source) r.positions.push_back(m.positions[v]);
+    expect_clean(m, r, 0);
+    const MeshStats before = measure_mesh(m.positions.size(), m.triangles);
+    const MeshStats after = measure_mesh(r.positions.size(), r.triangles);
+    EXPECT_LE(after.boundary_edges + 7, before.boundary_edges);
+    EXPECT_EQ(after.components.size(), before.components.size());
+    EXPECT_GE(r.removal.stats.holes_refilled, 1u);
 }
 
 // The shipped sample at the defaults, both methods: the written coordinates (float) have no

@@ -2,6 +2,7 @@
 
 #include "geometry.h"
 #include "mesh/fans.h"
+#include "mesh/small_holes_fill.h"
 #include "mesh/triangle_grid.h"
 
 #include <algorithm>
@@ -122,6 +123,7 @@ public:
                 ++stats.vertices_removed;
                 ++stats.holes_refilled;
             }
+        close_small_cut_holes(stats);
         stats.vertices_removed += disc_vertices_;
         stats.vertices_reinserted = reinserted_;
         stats.vertices_removed -= reinserted_;
@@ -216,6 +218,7 @@ private:
         const std::uint32_t cut =
             std::min(p.first, p.second, [&](auto a, auto b) { return cost(a) < cost(b); });
         if (border_edges(cut) == 0) inner_cuts_.push_back(triangles_[cut]);
+        cut_corners_.insert(cut_corners_.end(), triangles_[cut].begin(), triangles_[cut].end());
         retire(cut);
         ++stats.faces_cut;
     }
@@ -262,6 +265,123 @@ private:
         return false;
     }
 
+    // The holes that cuts left inside the mesh and close_cut did not close: several cuts next
+    // to each other leave one hole that is no single cut face's. A border loop through a cut
+    // face's corner, of at most kMaxFilledLoop edges, along a cut face and with no edge on the
+    // border of the given mesh (a hole of a closed surface, as D-28 closes them), is
+    // triangulated across, or else closed as close_cut closes a cut face's hole: a corner's fan
+    // filled together with it, then a disc of fans near it.
+    void close_small_cut_holes(FoldRemovalStats& stats) {
+        std::sort(cut_corners_.begin(), cut_corners_.end());
+        cut_corners_.erase(std::unique(cut_corners_.begin(), cut_corners_.end()),
+                           cut_corners_.end());
+        for (std::uint32_t v : cut_corners_) {
+            if (faces_of(v).empty()) continue;
+            const std::optional<Hole> hole = small_cut_hole(v);
+            if (!hole) continue;
+            std::size_t removed = 0;
+            if (close_hole(*hole) || (removed = close_around(hole->corners)) > 0) {
+                --stats.faces_cut;
+                ++stats.holes_refilled;
+                stats.vertices_removed += removed;
+            }
+        }
+    }
+
+    // close_cut's fills for a hole with `corners` in fill order: a corner whose fan, open at the
+    // hole, is triangulated again across it; else a disc of fans around a corner within
+    // kClosingReach of the hole's longest side from its centre. Returns the vertices removed
+    // (0: the hole is still open).
+    std::size_t close_around(const std::vector<std::uint32_t>& corners) {
+        const std::size_t m = corners.size();
+        for (const bool facing : {true, false})
+            for (std::size_t k = 0; k < m; ++k) {
+                const std::uint32_t v = corners[k], next = corners[(k + 1) % m],
+                                    last = corners[(k + m - 1) % m];
+                std::vector<Triangle> fan;
+                for (std::uint32_t f : faces_of(v)) fan.push_back(triangles_[f]);
+                const std::optional<Hole> link = link_of(v, fan);
+                // Two corners: the fill would have no triangle, v's one face would just go.
+                if (link && !link->closed && link->corners.size() >= 3 &&
+                    link->corners.front() == last && link->corners.back() == next &&
+                    refill(v, facing))
+                    return 1;
+            }
+        Vec3 centre(0, 0, 0);
+        double longest = 0;
+        for (std::size_t k = 0; k < m; ++k) {
+            centre += positions_[corners[k]] / double(m);
+            longest = std::max(longest,
+                               (positions_[corners[k]] - positions_[corners[(k + 1) % m]]).Norm());
+        }
+        const Reach reach{centre, kClosingReach * longest};
+        for (std::uint32_t v : corners)
+            if (!faces_of(v).empty())
+                if (const std::size_t removed = refill_region(v, &reach)) return removed;
+        return 0;
+    }
+
+    // The border loop that leaves v along a border edge, as the hole a fill closes (corners in
+    // the order of the faces that would fill it), if it is short, runs along a cut face (an edge
+    // whose other face in the given mesh has gone) and has no edge that was on the border of the
+    // given mesh (fills make edges the given mesh did not have).
+    std::optional<Hole> small_cut_hole(std::uint32_t v) const {
+        std::vector<std::uint32_t> loop{v};
+        bool along_a_cut = false;
+        for (std::size_t step = 0; step <= kMaxFilledLoop; ++step) {
+            const std::uint32_t a = loop.back();
+            const std::optional<std::uint32_t> next = border_successor(a);
+            if (!next || (given_edge(a, *next) && !given_edge(*next, a))) return std::nullopt;
+            along_a_cut = along_a_cut || given_edge(*next, a);
+            if (*next == v) {
+                if (loop.size() < 3 || !along_a_cut) return std::nullopt;
+                Hole hole;
+                hole.closed = true;
+                hole.corners.assign(loop.rbegin(), loop.rend()); // the fill runs the other way
+                return hole;
+            }
+            if (std::find(loop.begin(), loop.end(), *next) != loop.end()) return std::nullopt;
+            loop.push_back(*next);
+        }
+        return std::nullopt;
+    }
+
+    // The one border edge a→b leaving a (a standing face holds a→b, none b→a), if exactly one.
+    std::optional<std::uint32_t> border_successor(std::uint32_t a) const {
+        std::optional<std::uint32_t> found;
+        bool several = false;
+        any_face(a, [&](const Triangle& t) {
+            const auto k = std::size_t(std::find(t.begin(), t.end(), a) - t.begin());
+            const std::uint32_t b = t[(k + 1) % 3];
+            if (!has_directed_edge(b, a)) {
+                several = several || found.has_value();
+                found = b;
+            }
+            return false;
+        });
+        if (several) return std::nullopt;
+        return found;
+    }
+
+    // A face of the given mesh held a→b.
+    bool given_edge(std::uint32_t a, std::uint32_t b) const {
+        for (std::uint32_t e = at_.begin(a); e < at_.end(a); ++e)
+            if (triangles_[at_.corner[e] / 3][(at_.corner[e] % 3 + 1) % 3] == b) return true;
+        return false;
+    }
+
+    // Fills a closed hole with the first triangulation that fits (facing the normals first).
+    bool close_hole(const Hole& hole) {
+        blocker_ = kNoFace;
+        for (const bool facing : {true, false})
+            if (const std::optional<std::vector<Triangle>> fill =
+                    first_fitting_fill(hole, facing)) {
+                for (const Triangle& t : *fill) add(t);
+                return true;
+            }
+        return false;
+    }
+
     // Edges of face f in no other standing face.
     int border_edges(std::uint32_t f) {
         alive_[f] = 0;
@@ -290,6 +410,8 @@ private:
             blocker_ = kNoFace;
             for (const bool facing : {true, false})
                 if (border && !fill) fill = first_fitting_fill(border->hole, facing);
+            // Closing a hole (a reach is given), a fill without a triangle closes nothing.
+            if (reach && fill && fill->empty()) fill.reset();
             for (std::uint32_t f : faces) alive_[f] = 1;
             if (!border) return 0;
             if (fill) {
@@ -711,11 +833,12 @@ private:
     std::vector<std::uint8_t> alive_;
     const std::vector<TrianglePair>& pairs_;
     std::vector<std::uint32_t> partner_start_, partner_, live_pairs_;
-    FacesNearBox near_;                ///< gather_standing()'s faces
-    std::uint32_t blocker_ = kNoFace;  ///< the standing face that the last fill crossed
-    std::size_t reinserted_ = 0;       ///< removed vertices put back (reinsert)
-    std::vector<Triangle> inner_cuts_; ///< faces cut with no edge on the border
-    std::size_t disc_vertices_ = 0;    ///< vertices beyond one that close_cut's discs removed
+    FacesNearBox near_;                      ///< gather_standing()'s faces
+    std::uint32_t blocker_ = kNoFace;        ///< the standing face that the last fill crossed
+    std::size_t reinserted_ = 0;             ///< removed vertices put back (reinsert)
+    std::vector<Triangle> inner_cuts_;       ///< faces cut with no edge on the border
+    std::vector<std::uint32_t> cut_corners_; ///< the corners of every face cut
+    std::size_t disc_vertices_ = 0;          ///< vertices beyond one that close_cut's discs removed
 };
 
 } // namespace
