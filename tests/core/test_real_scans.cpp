@@ -78,9 +78,9 @@ TEST(RealScans, DragonSampleLosesItsFoldsAndKeepsItsBoundary) {
     expect_folds_removed_keeping_the_boundary(testing::sample_mesh_surface(mesh, 200000));
 }
 
-// The dragon's own vertices (437,645): 962 -> 1,016 boundary edges since D-34 (393 -> 497
-// before), faces cut inside the mesh that no fill can close (docs/STATUS.md, gap 14).
-TEST(RealScans, DISABLED_DragonVerticesLoseTheirFoldsAndKeepTheirBoundary) {
+// The dragon's own vertices (437,645): 962 -> 1,006 boundary edges since session 14 (flaps cut
+// only where no fan's fill fits; 1,016 before, and 393 -> 497 before D-34).
+TEST(RealScans, DragonVerticesLoseTheirFoldsAndKeepTheirBoundary) {
     const std::string mesh = shared("meshes/dragon_vrip.ply");
     if (mesh.empty()) GTEST_SKIP() << "shared data not available";
     expect_folds_removed_keeping_the_boundary(io::read_point_set(mesh));
