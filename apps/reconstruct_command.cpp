@@ -217,6 +217,10 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
             std::printf("  noise: %.2f point spacings, so HRsR worked on smoothed positions (the "
                         "mesh keeps the input's)\n",
                         r.preprocess.relative_noise);
+    } else if (r.preprocess.denoised) {
+        std::printf("  noise: %.2f point spacings, so RsR used the input normals averaged over "
+                    "the smoothing neighbourhood\n",
+                    r.preprocess.relative_noise);
     }
     const std::string genus = genus_of_closed_components_text(m);
     const std::string largest = largest_component_text(m);

@@ -103,10 +103,14 @@ void FilterHrsrPlugin::log_summary(const hrsr::ReconstructionReport& r, double s
                     "%zu to %zu graph hops on the cloud RsR saw",
                     *lo, *hi);
     }
-    if (r.preprocess.denoised)
+    if (r.preprocess.denoised && r.coarse_points > 0)
         log_message("HRsR: the cloud's noise is %.2f point spacings, so the collapse and the "
                     "re-expansion worked on smoothed positions (D-33); the vertices keep the "
                     "input's",
+                    r.preprocess.relative_noise);
+    else if (r.preprocess.denoised)
+        log_message("HRsR: the cloud's noise is %.2f point spacings, so RsR used the layer's "
+                    "normals averaged over the smoothing neighbourhood (D-33)",
                     r.preprocess.relative_noise);
     log_message("HRsR: fold repair (D-26, D-32): %zu intersecting triangle pairs, %zu edge "
                 "flips, %zu pairs left; %zu vertices taken out (%zu holes filled again), %zu "

@@ -51,8 +51,10 @@ struct PreprocessReport {
     double smoothing_mean_shift =
         0; ///< mean |displacement| along the normal, fraction of the bbox diagonal
     double smoothing_max_shift = 0; ///< largest one
-    /// HRsR (tangent mode): the cloud's noise in point spacings (D-33, relative_noise()), and
-    /// whether its collapse and re-expansion therefore work on smoothed positions.
+    /// Tangent mode: the cloud's noise in point spacings (D-33, relative_noise()), and whether
+    /// it is over kNoisyCloud: HRsR's collapse and re-expansion then work on smoothed positions,
+    /// and with input normals both methods smooth along their neighbourhood mean. Measured for
+    /// HRsR always, for RsR only with input normals.
     double relative_noise = 0;
     bool denoised = false;
 
