@@ -106,16 +106,25 @@ bool noisy(const PreparedCloud& cloud, const KnnIndex& index, const Execution& e
     return report.denoised;
 }
 
+// D-33: the input normals' mean over the smoothing neighbourhood, in two rounds as the
+// positions get (`index` on the input positions).
+std::vector<Vec3> neighbourhood_mean_normals(const PreparedCloud& cloud, const KnnIndex& index,
+                                             const PreprocessOptions& options,
+                                             const Execution& exec) {
+    const int neighbours = neighbour_count(cloud.size(), options.k_smoothing);
+    std::vector<Vec3> mean = cloud.normals;
+    for (int round = 0; round < 2; ++round) mean = averaged_normals(mean, index, neighbours, exec);
+    return mean;
+}
+
 // D-33 for RsR with input normals: in a noisy cloud its points are smoothed and embedded along
 // their normals' mean over the smoothing neighbourhood, as HRsR's are (1M triple torus with
 // 0.3 % noise: 449 boundary edges in 15 pieces with the input normals, closed with the mean).
 void average_normals_if_noisy(PreparedCloud& cloud, const KnnIndex& index,
                               const PreprocessOptions& options, const Execution& exec,
                               PreprocessReport& report) {
-    if (!noisy(cloud, index, exec, report)) return;
-    const int neighbours = neighbour_count(cloud.size(), options.k_smoothing);
-    for (int round = 0; round < 2; ++round)
-        cloud.normals = averaged_normals(cloud.normals, index, neighbours, exec);
+    if (noisy(cloud, index, exec, report))
+        cloud.normals = neighbourhood_mean_normals(cloud, index, options, exec);
 }
 
 } // namespace
@@ -166,11 +175,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
             // with 0.3 % noise: 62k intersecting pairs); their mean over the smoothing
             // neighbourhood, in two rounds as the positions get, is the surface's where the
             // points lie (30 pairs).
-            const int neighbours = neighbour_count(cloud.size(), options.k_smoothing);
-            cloud.smoothed_normals = cloud.normals;
-            for (int round = 0; round < 2; ++round)
-                cloud.smoothed_normals =
-                    averaged_normals(cloud.smoothed_normals, index, neighbours, exec);
+            cloud.smoothed_normals = neighbourhood_mean_normals(cloud, index, options, exec);
             cloud.smoothed = smoothed_positions(cloud.positions, cloud.smoothed_normals, options,
                                                 exec, report, &index);
         }
