@@ -240,7 +240,8 @@ void take_rsr_stats(const rsr::CloudMesh& m, ReconstructionReport& report) {
 // §7: the collapsed points, smoothed (tangent mode) and split into components like RsR's input.
 PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collapsed,
                        const PreprocessOptions& options, const Execution& exec,
-                       ReconstructionReport& report, std::vector<PointIndex>& dropped) {
+                       ReconstructionReport& report, std::vector<PointIndex>& dropped,
+                       const std::vector<Vec3>& geometry, int candidate_rank) {
     PreparedCloud coarse;
     coarse.positions = collapsed.positions;
     coarse.normals = collapsed.normals;
@@ -250,8 +251,16 @@ PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collaps
     coarse.smoothed =
         smoothed_positions(coarse.positions, coarse.normals, options, exec, report.preprocess);
     const CsrGraph graph = neighbour_graph(coarse.smoothed, options.k, exec);
-    const ComponentSplit split =
-        split_components(graph, coarse.positions, coarse.smoothed, coarse.normals, options, exec);
+    // D-35: the coarse cloud's pieces are the input's. At a coarse spacing wider than the gap
+    // between two surfaces their kNN graph joins them (three interlocked rings 0.023 apart, at
+    // p = 1/8 a coarse spacing of 0.06, were made into one surface of genus 6): an edge longer
+    // than the kNN reach of the input points at both its ends is one that RsR's component graph
+    // on the input could not have. D-31 asks the same of handle edges, at the candidates' rank.
+    std::vector<std::vector<double>> reach =
+        input_reach(geometry, coarse.node.values(), {options.k, candidate_rank}, exec);
+    coarse.handle_reach = std::move(reach[1]);
+    const ComponentSplit split = split_components(graph, coarse.positions, coarse.smoothed,
+                                                  coarse.normals, options, exec, reach[0]);
     record_split(split, cloud.normalisation, report.preprocess);
     return keep_components(coarse, split, dropped);
 }
@@ -361,10 +370,9 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     PreparedCloud coarse;
     {
         Timer timer(report.timings, "hand-off");
-        coarse = hand_off(cloud, collapsed, pre, exec, report, dropped_nodes);
         // D-31: a coarse handle edge must be one RsR could make on the input points.
-        coarse.handle_reach = input_reach(geometry, coarse.node.values(),
-                                          rsr::candidate_rank(pre.k, cloud.size()), exec);
+        coarse = hand_off(cloud, collapsed, pre, exec, report, dropped_nodes, geometry,
+                          rsr::candidate_rank(pre.k, cloud.size()));
     }
     if (coarse.size() == 0)
         throw InvalidOption(OptionId::CollapseRatio,

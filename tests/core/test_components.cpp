@@ -1,4 +1,5 @@
 #include "errors.h"
+#include "preprocess/components.h"
 #include "preprocess/preprocess.h"
 #include "samplers.h"
 
@@ -95,6 +96,48 @@ TEST(Components, OptionsAreValidatedByName) {
     o = {};
     o.r = -1;
     EXPECT_THROW(preprocess(testing::sample_sphere(100), o, {}, report), InvalidOption);
+}
+
+// D-35: two parallel sheets 0.03 apart (three spacings) with the same normals: 70 neighbours
+// reach across, so the kNN graph joins them, but no edge across is within a reach of 0.025.
+struct TwoSheets {
+    std::vector<Vec3> positions, normals;
+    explicit TwoSheets(std::size_t lower_side, std::size_t upper_side) {
+        for (const PointSet& p :
+             {patch(lower_side, Vec3(0, 0, 0)), patch(upper_side, Vec3(0.05, 0.05, 0.03))}) {
+            positions.insert(positions.end(), p.positions.begin(), p.positions.end());
+            normals.insert(normals.end(), p.normals.begin(), p.normals.end());
+        }
+    }
+    ComponentSplit split(const std::vector<double>& reach) const {
+        const CsrGraph graph = neighbour_graph(positions, 70, {});
+        return split_components(graph, positions, positions, normals, PreprocessOptions{}, {},
+                                reach);
+    }
+};
+
+TEST(Components, EdgesBeyondTheInputReachKeepSheetsApart) {
+    const TwoSheets sheets(20, 20);
+    const ComponentSplit joined = sheets.split({});
+    EXPECT_EQ(joined.count, 1u);
+    EXPECT_EQ(joined.edges_beyond_reach, 0u);
+    const ComponentSplit apart = sheets.split(std::vector<double>(sheets.positions.size(), 0.025));
+    ASSERT_EQ(apart.count, 2u);
+    EXPECT_EQ(apart.sizes, (std::vector<std::size_t>{400, 400}));
+    EXPECT_GT(apart.edges_beyond_reach, 0u);
+    for (std::size_t i = 0; i < sheets.positions.size(); ++i)
+        EXPECT_EQ(apart.label[i], i < 400 ? 0u : 1u);
+}
+
+TEST(Components, APieceTooSmallToStandAloneRejoinsBeyondTheReach) {
+    // 49 points: apart, under the 100 points a component needs; joined as before D-35 rather
+    // than dropped.
+    const TwoSheets sheets(20, 7);
+    const ComponentSplit split = sheets.split(std::vector<double>(sheets.positions.size(), 0.025));
+    ASSERT_EQ(split.count, 1u);
+    EXPECT_EQ(split.sizes, (std::vector<std::size_t>{449}));
+    EXPECT_EQ(split.dropped_components, 0u);
+    EXPECT_EQ(split.edges_beyond_reach, 0u);
 }
 
 } // namespace

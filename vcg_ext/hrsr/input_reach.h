@@ -17,4 +17,10 @@ namespace hrsr {
 std::vector<double> input_reach(const std::vector<Vec3>& points, const std::vector<PointIndex>& at,
                                 int rank, const Execution& exec);
 
+/// The same at several ranks, from one kd-tree and one query per point: result[r][i] is the
+/// reach of point at[i] at ranks[r].
+std::vector<std::vector<double>> input_reach(const std::vector<Vec3>& points,
+                                             const std::vector<PointIndex>& at,
+                                             const std::vector<int>& ranks, const Execution& exec);
+
 } // namespace hrsr

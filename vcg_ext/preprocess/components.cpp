@@ -12,9 +12,31 @@ double normal_filter_cosine(const PreprocessOptions& options) {
     return std::cos(degrees * M_PI / 180.0);
 }
 
+namespace {
+
+// D-35: edges beyond the reach keep pieces apart only where each piece could stand alone; a
+// smaller one rejoins the surface it was taken from (sizes as the reach left them: the result
+// does not depend on the order of the edges).
+void join_small_pieces(DisjointSets& sets, std::size_t n,
+                       const std::vector<std::pair<std::uint32_t, std::uint32_t>>& beyond_reach,
+                       std::size_t min_size, ComponentSplit& split) {
+    if (beyond_reach.empty()) return;
+    std::vector<std::size_t> size(n, 0);
+    for (std::uint32_t i = 0; i < n; ++i) ++size[sets.find(i)];
+    std::vector<std::uint8_t> small(n, 0);
+    for (std::uint32_t i = 0; i < n; ++i) small[i] = size[sets.find(i)] < min_size;
+    for (const auto& [i, j] : beyond_reach)
+        if (small[i] || small[j]) sets.unite(i, j);
+    for (const auto& [i, j] : beyond_reach)
+        if (sets.find(i) != sets.find(j)) ++split.edges_beyond_reach;
+}
+
+} // namespace
+
 ComponentSplit split_components(const CsrGraph& graph, const std::vector<Vec3>& positions,
                                 const std::vector<Vec3>& smoothed, const std::vector<Vec3>& normals,
-                                const PreprocessOptions& options, const Execution& exec) {
+                                const PreprocessOptions& options, const Execution& exec,
+                                const std::vector<double>& reach) {
     const std::size_t n = graph.size();
     const double min_cos = normal_filter_cosine(options);
     auto passes_filter = [&](std::size_t i, std::uint32_t j) {
@@ -41,19 +63,24 @@ ComponentSplit split_components(const CsrGraph& graph, const std::vector<Vec3>& 
 
     ComponentSplit split;
     split.cut_length = edges > 0 ? options.r * total / double(edges) : 0.0;
+    const std::size_t min_size = std::min<std::size_t>(n, std::size_t(options.min_component_size));
     DisjointSets sets(n);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> beyond_reach;
     for (std::size_t i = 0; i < n; ++i)
         for (const std::uint32_t* j = graph.begin(i); j != graph.end(i); ++j) {
             if (*j <= i || !passes_filter(i, *j)) continue;
             if ((positions[*j] - positions[i]).Norm() > split.cut_length)
                 ++split.edges_cut;
+            else if (!reach.empty() &&
+                     (smoothed[*j] - smoothed[i]).Norm() > std::max(reach[i], reach[*j]))
+                beyond_reach.emplace_back(std::uint32_t(i), *j);
             else
                 sets.unite(std::uint32_t(i), *j);
         }
+    join_small_pieces(sets, n, beyond_reach, min_size, split);
 
     std::vector<std::size_t> root_size(n, 0);
     for (std::uint32_t i = 0; i < n; ++i) ++root_size[sets.find(i)];
-    const std::size_t min_size = std::min<std::size_t>(n, std::size_t(options.min_component_size));
     split.label.assign(n, ComponentSplit::kDropped);
     std::vector<std::uint32_t> root_label(n, ComponentSplit::kDropped);
     for (std::uint32_t i = 0; i < n; ++i) {

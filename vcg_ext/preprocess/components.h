@@ -18,15 +18,20 @@ struct ComponentSplit {
     std::vector<std::size_t> sizes; ///< per kept component
     double cut_length = 0;          ///< R, in the units of the positions
     std::size_t edges_cut = 0;
+    std::size_t edges_beyond_reach = 0; ///< edges between pieces kept apart by `reach` (D-35)
 };
 
 /// `graph` is the symmetric kNN graph on the smoothed positions. Edges are kept when their
 /// normals pass the filter (θ in tangent mode, 90° in Euclidean mode); R = r × the mean smoothed
 /// length of the kept edges; an edge whose length on the *original* positions exceeds R is cut.
 /// Components of fewer than min(N, min_component_size) points are dropped.
+/// D-35: with `reach` (per point, or empty for none) an edge longer on the smoothed positions
+/// than both its ends' reach joins two pieces only where one of them, apart, would be smaller
+/// than that minimum size.
 ComponentSplit split_components(const CsrGraph& graph, const std::vector<Vec3>& positions,
                                 const std::vector<Vec3>& smoothed, const std::vector<Vec3>& normals,
-                                const PreprocessOptions& options, const Execution& exec);
+                                const PreprocessOptions& options, const Execution& exec,
+                                const std::vector<double>& reach = {});
 
 /// Cosine of the normal-filter angle for the options' distance mode (§3.3).
 double normal_filter_cosine(const PreprocessOptions& options);

@@ -260,6 +260,7 @@ PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& 
         if (!cloud.smoothed_normals.empty())
             kept.smoothed_normals.push_back(cloud.smoothed_normals[i]);
         if (!cloud.weights.empty()) kept.weights.push_back(cloud.weights[i]);
+        if (!cloud.handle_reach.empty()) kept.handle_reach.push_back(cloud.handle_reach[i]);
         kept.component.push_back(split.label[i]);
     }
     return kept;
@@ -281,6 +282,7 @@ void record_split(const ComponentSplit& split, const Normalisation& normalisatio
                   PreprocessReport& report) {
     report.cut_length = split.cut_length / normalisation.scale;
     report.edges_cut = split.edges_cut;
+    report.edges_beyond_input_reach = split.edges_beyond_reach;
     report.components_kept = split.count;
     report.components_dropped = split.dropped_components;
     report.component_sizes = split.sizes;

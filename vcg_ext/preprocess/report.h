@@ -61,6 +61,9 @@ struct PreprocessReport {
     double bbox_diagonal = 0;  ///< of the finite input points, in input units
     double cut_length = 0;     ///< R of §4.6, in input units
     std::size_t edges_cut = 0; ///< neighbour edges longer than R
+    /// HRsR: coarse neighbour edges longer than the input's kNN reach at both ends, which kept
+    /// two coarse pieces apart (D-35)
+    std::size_t edges_beyond_input_reach = 0;
     std::size_t components_kept = 0;
     std::size_t components_dropped = 0;
     std::vector<std::size_t> component_sizes; ///< of the kept components, in label order
