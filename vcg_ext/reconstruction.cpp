@@ -241,7 +241,7 @@ void take_rsr_stats(const rsr::CloudMesh& m, ReconstructionReport& report) {
 PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collapsed,
                        const PreprocessOptions& options, const Execution& exec,
                        ReconstructionReport& report, std::vector<PointIndex>& dropped,
-                       const std::vector<Vec3>& geometry, int candidate_rank) {
+                       const std::vector<Vec3>& geometry) {
     PreparedCloud coarse;
     coarse.positions = collapsed.positions;
     coarse.normals = collapsed.normals;
@@ -253,11 +253,13 @@ PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collaps
     const CsrGraph graph = neighbour_graph(coarse.smoothed, options.k, exec);
     // D-35: the coarse cloud's pieces are the input's. At a coarse spacing wider than the gap
     // between two surfaces their kNN graph joins them (three interlocked rings 0.023 apart, at
-    // p = 1/8 a coarse spacing of 0.06, were made into one surface of genus 6): an edge longer
+    // p = 1/8 a coarse spacing of 0.06, came out as one piece of genus 2): an edge longer
     // than the kNN reach of the input points at both its ends is one that RsR's component graph
-    // on the input could not have. D-31 asks the same of handle edges, at the candidates' rank.
+    // on the input could not have. D-31: a coarse handle edge must be one RsR could make on the
+    // input points, within the reach at the candidates' rank.
     std::vector<std::vector<double>> reach =
-        input_reach(geometry, coarse.node.values(), {options.k, candidate_rank}, exec);
+        input_reach(geometry, coarse.node.values(),
+                    {options.k, rsr::candidate_rank(options.k, cloud.size())}, exec);
     coarse.handle_reach = std::move(reach[1]);
     const ComponentSplit split = split_components(graph, coarse.positions, coarse.smoothed,
                                                   coarse.normals, options, exec, reach[0]);
@@ -370,9 +372,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     PreparedCloud coarse;
     {
         Timer timer(report.timings, "hand-off");
-        // D-31: a coarse handle edge must be one RsR could make on the input points.
-        coarse = hand_off(cloud, collapsed, pre, exec, report, dropped_nodes, geometry,
-                          rsr::candidate_rank(pre.k, cloud.size()));
+        coarse = hand_off(cloud, collapsed, pre, exec, report, dropped_nodes, geometry);
     }
     if (coarse.size() == 0)
         throw InvalidOption(OptionId::CollapseRatio,
