@@ -174,6 +174,17 @@ void repair_and_remove_folds(const PointSet& input, int rounds, const Execution&
     take_fold_removal(input, removal, mesh, report);
 }
 
+// D-33 for RsR embeds a noisy cloud along its input normals' neighbourhood mean; the vertices
+// keep the input's own normals (unit, as sanitize() makes them), as HRsR's do.
+void restore_input_normals(const PointSet& input, const PreprocessReport& pre,
+                           Reconstruction& mesh) {
+    if (!pre.denoised || pre.normal_origin != NormalOrigin::Input) return;
+    for (std::size_t v = 0; v < mesh.vertex_input_index.size(); ++v) {
+        const Vec3& n = input.normals[mesh.vertex_input_index[v]];
+        mesh.vertex_normals[v] = n / n.Norm();
+    }
+}
+
 // A phase boundary: progress, and the chance to cancel before the phase's work.
 void begin_phase(const Execution& exec, const std::string& phase) {
     if (exec.progress) exec.progress->begin(phase);
@@ -334,6 +345,7 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
     assembly.reset();
     repair_and_remove_folds(input, options.fold_repair_rounds, exec, mesh, report);
+    restore_input_normals(input, report.preprocess, mesh);
     measure_output(input, cloud.normalisation, options.orient_outward, mesh, report);
     account(input, mesh, report);
     require_triangles(mesh, report);

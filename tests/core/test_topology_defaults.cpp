@@ -203,6 +203,24 @@ TEST(NoisyCloudWithNormals, ExactNormalsAreAveragedBeforeSmoothing) {
     EXPECT_TRUE(report.dropped_fold.empty());
 }
 
+// D-33 for RsR: the cloud is embedded along its normals' neighbourhood mean, but the vertices
+// keep the input's normals (before session 15 RsR wrote the mean; HRsR always wrote the input's).
+TEST(NoisyCloudWithNormals, RsrWritesTheInputNormals) {
+    const Cloud c{"Sphere_20k_Noise03", Shape::Sphere, 20000, Density::Uniform, 0.3, true};
+    const PointSet cloud = sample(c);
+    ReconstructionOptions options;
+    options.method = hrsr::Method::Rsr;
+    ReconstructionReport report;
+    const Reconstruction r = reconstruct(cloud, options, {}, report);
+    ASSERT_TRUE(report.preprocess.denoised);
+    ASSERT_EQ(report.flipped_components, 0u); // D-6 would turn the normals of a flipped piece
+    ASSERT_FALSE(r.vertex_input_index.empty());
+    for (std::size_t v = 0; v < r.vertex_input_index.size(); ++v) {
+        const Vec3& n = cloud.normals[r.vertex_input_index[v]];
+        ASSERT_EQ(r.vertex_normals[v], n / n.Norm()) << "vertex " << v;
+    }
+}
+
 // Known to fail (bench/topology.sh, session 6): on the 5k graded triple torus with noise,
 // HRsR at p ≤ 0.25 runs RsR on 340-700 points and leaves a slit of 8-13 boundary edges where the
 // sparse end of a tube is 3-4 coarse points around; since D-31 (session 8) this cell also loses
