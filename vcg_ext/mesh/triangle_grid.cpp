@@ -1,5 +1,7 @@
 #include "mesh/triangle_grid.h"
 
+#include <algorithm>
+
 namespace hrsr {
 
 TriangleGrid::TriangleGrid(const TriangleGeometry& g, const Execution& exec) {
@@ -51,15 +53,20 @@ std::vector<TrianglePair> TriangleGrid::all_pairs(const TriangleGeometry& g,
                 const Box box = g.box(g.triangle(f));
                 members.push_back({f, box, cell_of(box.lo)});
             }
+            // Sweep along x: a member meets only those whose x range starts before its own ends.
+            std::sort(members.begin(), members.end(), [](const Member& s, const Member& t) {
+                return s.box.lo[0] < t.box.lo[0] || (s.box.lo[0] == t.box.lo[0] && s.face < t.face);
+            });
             for (std::size_t i = 0; i < members.size(); ++i)
                 for (std::size_t j = i + 1; j < members.size(); ++j) {
                     const Member &s = members[i], &t = members[j];
+                    if (t.box.lo[0] > s.box.hi[0]) break;
                     if (!s.box.overlaps(t.box)) continue;
                     if (index(std::max(s.low[0], t.low[0]), std::max(s.low[1], t.low[1]),
                               std::max(s.low[2], t.low[2])) != here)
                         continue;
-                    if (g.intersect(g.triangle(s.face), g.triangle(t.face)))
-                        found[b].emplace_back(s.face, t.face);
+                    if (g.intersect_unboxed(g.triangle(s.face), g.triangle(t.face)))
+                        found[b].emplace_back(std::min(s.face, t.face), std::max(s.face, t.face));
                 }
         }
     });
