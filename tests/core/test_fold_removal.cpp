@@ -156,6 +156,25 @@ TEST(FoldRemoval, AHoleOfAdjacentCutsClosesAgain) {
     EXPECT_GE(r.removal.stats.holes_refilled, 1u);
 }
 
+// D-32's last step: once every fold is resolved, a vertex it took out goes back over a standing
+// face near it (split into three, or with the face across one of its edges into four) where that
+// fits. On this patch of the lion it took 13 vertices out and put 1 back; now 8 of them go back.
+TEST(FoldRemoval, TakenOutVerticesGoBackOnceTheFoldsAreResolved) {
+    const io::MeshFile patch =
+        io::read_mesh(std::string(HRSR_TEST_DATA) + "/folds/lion_patch_adjacent_cuts.ply");
+    const TestMesh m{patch.points.positions, patch.triangles};
+    Removed r;
+    r.triangles = m.triangles;
+    FoldSearch search(m.positions, r.triangles, {});
+    repair_folds(search, r.triangles, RsrOptions{}.fold_repair_rounds);
+    r.removal = remove_folds(search, patch.points.normals, r.triangles);
+    for (std::uint32_t v : r.removal.vertex_source) r.positions.push_back(m.positions[v]);
+    expect_clean(m, r, 0);
+    EXPECT_LE(r.removal.stats.vertices_removed, 6u);
+    EXPECT_GE(r.removal.stats.vertices_reinserted, 8u);
+    EXPECT_EQ(r.positions.size(), m.positions.size() - r.removal.stats.vertices_removed);
+}
+
 // The shipped sample at the defaults, both methods: the written coordinates (float) have no
 // intersecting pair, every point taken out is reported as dropped in a fold, and r_v stays.
 TEST(FoldRemoval, OwlAtDefaultsHasNoIntersectingPair) {
