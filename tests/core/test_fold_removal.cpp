@@ -138,16 +138,26 @@ TEST(FoldRemoval, SameResultOnOneAndTwoThreads) {
 // faces cut next to each other leave one four-edge hole that no single cut face's closing
 // (close_cut) fits; the closing of small cut holes fills it across. Before it, the boundary went
 // 89 -> 86 (that hole open); now 89 -> 82.
-TEST(FoldRemoval, AHoleOfAdjacentCutsClosesAgain) {
-    const io::MeshFile patch =
-        io::read_mesh(std::string(HRSR_TEST_DATA) + "/folds/lion_patch_adjacent_cuts.ply");
-    const TestMesh m{patch.points.positions, patch.triangles};
+// A 554-vertex patch of the lion's mesh before the fold repair (tests/data/folds/README.md).
+io::MeshFile lion_patch() {
+    return io::read_mesh(std::string(HRSR_TEST_DATA) + "/folds/lion_patch_adjacent_cuts.ply");
+}
+
+// As the reconstruction does: one search, D-26's flips, then D-32 on what they left.
+Removed flip_then_remove(const TestMesh& m, const std::vector<Vec3>& normals) {
     Removed r;
     r.triangles = m.triangles;
     FoldSearch search(m.positions, r.triangles, {});
     repair_folds(search, r.triangles, RsrOptions{}.fold_repair_rounds);
-    r.removal = remove_folds(search, patch.points.normals, r.triangles);
+    r.removal = remove_folds(search, normals, r.triangles);
     for (std::uint32_t v : r.removal.vertex_source) r.positions.push_back(m.positions[v]);
+    return r;
+}
+
+TEST(FoldRemoval, AHoleOfAdjacentCutsClosesAgain) {
+    const io::MeshFile patch = lion_patch();
+    const TestMesh m{patch.points.positions, patch.triangles};
+    const Removed r = flip_then_remove(m, patch.points.normals);
     expect_clean(m, r, 0);
     const MeshStats before = measure_mesh(m.positions.size(), m.triangles);
     const MeshStats after = measure_mesh(r.positions.size(), r.triangles);
@@ -160,15 +170,9 @@ TEST(FoldRemoval, AHoleOfAdjacentCutsClosesAgain) {
 // face near it (split into three, or with the face across one of its edges into four) where that
 // fits. On this patch of the lion it took 13 vertices out and put 1 back; now 8 of them go back.
 TEST(FoldRemoval, TakenOutVerticesGoBackOnceTheFoldsAreResolved) {
-    const io::MeshFile patch =
-        io::read_mesh(std::string(HRSR_TEST_DATA) + "/folds/lion_patch_adjacent_cuts.ply");
+    const io::MeshFile patch = lion_patch();
     const TestMesh m{patch.points.positions, patch.triangles};
-    Removed r;
-    r.triangles = m.triangles;
-    FoldSearch search(m.positions, r.triangles, {});
-    repair_folds(search, r.triangles, RsrOptions{}.fold_repair_rounds);
-    r.removal = remove_folds(search, patch.points.normals, r.triangles);
-    for (std::uint32_t v : r.removal.vertex_source) r.positions.push_back(m.positions[v]);
+    const Removed r = flip_then_remove(m, patch.points.normals);
     expect_clean(m, r, 0);
     EXPECT_LE(r.removal.stats.vertices_removed, 6u);
     EXPECT_GE(r.removal.stats.vertices_reinserted, 8u);
