@@ -657,7 +657,8 @@ private:
         std::vector<Split> splits;
         for (std::uint32_t f : faces) {
             const Triangle t = triangles_[f];
-            splits.push_back({{f}, {{t[0], t[1], v}, {t[1], t[2], v}, {t[2], t[0], v}}, {f, f, f}});
+            const std::array<Triangle, 3> three = split_around(t, v);
+            splits.push_back({{f}, {three.begin(), three.end()}, {f, f, f}});
             for (int k = 0; k < 3; ++k) {
                 const std::optional<std::uint32_t> g = across(f, k);
                 if (!g || *g < f) continue; // each edge once
