@@ -9,6 +9,7 @@
 #include "mesh/self_intersections.h"
 #include "mesh/welding.h"
 #include "reconstruction.h"
+#include "vertex_normals.h"
 
 #include <gtest/gtest.h>
 
@@ -22,14 +23,7 @@ using testing::TestMesh;
 
 // Area-weighted vertex normals: on the folded fixtures they still face the sheet's way.
 std::vector<Vec3> face_normals_at_vertices(const TestMesh& m) {
-    std::vector<Vec3> n(m.positions.size(), Vec3(0, 0, 0));
-    for (const Triangle& t : m.triangles) {
-        const Vec3 a =
-            (m.positions[t[1]] - m.positions[t[0]]) ^ (m.positions[t[2]] - m.positions[t[0]]);
-        for (std::uint32_t v : t) n[v] += a;
-    }
-    for (Vec3& v : n) v.Normalize();
-    return n;
+    return testing::area_weighted_vertex_normals(m.positions, m.triangles);
 }
 
 struct Removed {

@@ -11,6 +11,7 @@
 #include "reconstruction.h"
 #include "rsr/handles.h"
 #include "samplers.h"
+#include "vertex_normals.h"
 
 #include <gtest/gtest.h>
 
@@ -368,14 +369,8 @@ TEST_P(InterlockedRingsWithNormals, ThreeClosedRingsOfGenusOne) {
         std::filesystem::path(HRSR_SHARED_DATA) / "topology" / "rings_3x_genus1.ply";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared data not available";
     const io::MeshFile mesh = io::read_mesh(path.string());
-    PointSet cloud = mesh.points;
-    cloud.normals.assign(cloud.positions.size(), Vec3(0, 0, 0));
-    for (const Triangle& t : mesh.triangles) { // area-weighted, outwards as the mesh is wound
-        const Vec3& a = cloud.positions[t[0]];
-        const Vec3 n = (cloud.positions[t[1]] - a) ^ (cloud.positions[t[2]] - a);
-        for (std::uint32_t v : t) cloud.normals[v] += n;
-    }
-    for (Vec3& n : cloud.normals) n.Normalize();
+    PointSet cloud = mesh.points; // outwards, as the mesh is wound
+    cloud.normals = testing::area_weighted_vertex_normals(cloud.positions, mesh.triangles);
     ReconstructionOptions options;
     if (GetParam().p < 1)
         options.collapse.collapse_ratio = GetParam().p;
