@@ -1,9 +1,8 @@
 #include "mesh/exact_predicates.h"
 
-#include <gmpxx.h>
+#include <gmp.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -28,45 +27,81 @@ bool decided(double det, double permanent, double bound) {
     return permanent >= kSmallestTrustedPermanent && std::abs(det) > bound * permanent;
 }
 
-// The coordinates as integers over one common power of two, exactly (doubles are dyadic):
-// integer arithmetic then needs no fractions to reduce. Each value is its 53-bit mantissa,
-// shifted by its exponent's distance above the lowest.
-template <std::size_t N>
-std::array<mpz_class, N> on_common_scale(const std::array<double, N>& values) {
-    constexpr int kMantissaBits = 53;
-    int lowest = std::numeric_limits<int>::max();
-    for (double x : values)
-        if (x != 0) {
-            int e = 0;
-            std::frexp(x, &e);
-            lowest = std::min(lowest, e);
-        }
-    std::array<mpz_class, N> scaled;
-    for (std::size_t k = 0; k < N; ++k) {
-        if (values[k] == 0) continue;
-        int e = 0;
-        scaled[k] = std::ldexp(std::frexp(values[k], &e), kMantissaBits); // an integer
-        mpz_mul_2exp(scaled[k].get_mpz_t(), scaled[k].get_mpz_t(), mp_bitcnt_t(e - lowest));
+// Integers of GMP, kept per thread with room for typical coordinates: line and depth scanners
+// put points exactly on planes and lines, so the exact path runs for many pairs there (a Kinect
+// frame's fold search was two thirds allocation and conversion with temporaries).
+class Scratch {
+public:
+    static constexpr int kValues = 12, kBits = 512;
+    Scratch() {
+        for (mpz_t& z : z_) mpz_init2(z, kBits);
     }
-    return scaled;
-}
+    ~Scratch() {
+        for (mpz_t& z : z_) mpz_clear(z);
+    }
+    Scratch(const Scratch&) = delete;
+    Scratch& operator=(const Scratch&) = delete;
+    mpz_t& operator[](int k) { return z_[k]; }
+
+    // values[k] as integers over one common power of two, exactly (doubles are dyadic): each is
+    // its 53-bit mantissa, shifted by its exponent's distance above the lowest.
+    void set_on_common_scale(const double* values, int n) {
+        constexpr int kMantissaBits = 53;
+        int lowest = std::numeric_limits<int>::max();
+        for (int k = 0; k < n; ++k)
+            if (values[k] != 0) {
+                int e = 0;
+                std::frexp(values[k], &e);
+                lowest = std::min(lowest, e);
+            }
+        for (int k = 0; k < n; ++k) {
+            int e = 0;
+            const double mantissa = std::frexp(values[k], &e);
+            mpz_set_si(z_[k], long(std::ldexp(mantissa, kMantissaBits))); // 0 stays 0
+            if (values[k] != 0) mpz_mul_2exp(z_[k], z_[k], mp_bitcnt_t(e - lowest));
+        }
+    }
+
+private:
+    mpz_t z_[kValues + 9 + 2];
+};
+
+thread_local Scratch scratch;
 
 int orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-    const std::array<mpz_class, 12> v = on_common_scale<12>(
-        {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]});
-    mpz_class m[3][3];
+    const double values[12] = {a[0], a[1], a[2], b[0], b[1], b[2],
+                               c[0], c[1], c[2], d[0], d[1], d[2]};
+    Scratch& z = scratch;
+    z.set_on_common_scale(values, 12);
+    // Rows b - a, c - a, d - a into slots 12 … 20; the minors' products into 21 and 22.
+    auto m = [&](int r, int k) -> mpz_t& { return z[12 + 3 * r + k]; };
     for (int r = 0; r < 3; ++r)
-        for (int k = 0; k < 3; ++k) m[r][k] = v[std::size_t(3 * (r + 1) + k)] - v[std::size_t(k)];
-    const mpz_class det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                          m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    return sgn(det);
+        for (int k = 0; k < 3; ++k) mpz_sub(m(r, k), z[3 * (r + 1) + k], z[k]);
+    mpz_t &minor = z[21], &det = z[22];
+    mpz_mul(minor, m(1, 1), m(2, 2));
+    mpz_submul(minor, m(1, 2), m(2, 1));
+    mpz_mul(det, m(0, 0), minor);
+    mpz_mul(minor, m(1, 0), m(2, 2));
+    mpz_submul(minor, m(1, 2), m(2, 0));
+    mpz_submul(det, m(0, 1), minor);
+    mpz_mul(minor, m(1, 0), m(2, 1));
+    mpz_submul(minor, m(1, 1), m(2, 0));
+    mpz_addmul(det, m(0, 2), minor);
+    return mpz_sgn(det);
 }
 
 int orient2d_exact(const Vec3& a, const Vec3& b, const Vec3& c, int i, int j) {
-    const std::array<mpz_class, 6> v = on_common_scale<6>({a[i], a[j], b[i], b[j], c[i], c[j]});
-    const mpz_class det = (v[2] - v[0]) * (v[5] - v[1]) - (v[3] - v[1]) * (v[4] - v[0]);
-    return sgn(det);
+    const double values[6] = {a[i], a[j], b[i], b[j], c[i], c[j]};
+    Scratch& z = scratch;
+    z.set_on_common_scale(values, 6);
+    // (b - a) in 12, 13 and (c - a) in 14, 15; the determinant in 22.
+    mpz_sub(z[12], z[2], z[0]);
+    mpz_sub(z[13], z[3], z[1]);
+    mpz_sub(z[14], z[4], z[0]);
+    mpz_sub(z[15], z[5], z[1]);
+    mpz_mul(z[22], z[12], z[15]);
+    mpz_submul(z[22], z[13], z[14]);
+    return mpz_sgn(z[22]);
 }
 
 } // namespace
