@@ -188,6 +188,11 @@ nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionRe
               {"small_holes_filled", r.small_holes_filled},
               {"ear_edges", r.ear_edges}}},
             {"fold_repair", fold_repair_json(r)},
+            {"flat_faces",
+             {{"found", r.flat_faces.found},
+              {"flipped", r.flat_faces.flipped},
+              {"removed_from_border", r.flat_faces.removed},
+              {"left", r.flat_faces.left}}},
             {"hrsr", hrsr_json(r)},
             {"preprocess", to_json(r.preprocess)},
             {"timings", timings},
@@ -246,6 +251,11 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
                     r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after,
                     f.vertices_removed, f.holes_refilled, f.faces_cut, f.pairs_after);
     }
+    if (r.flat_faces.found > 0)
+        std::printf("  faces without area (corners on one line): %zu, %zu edges flipped, %zu taken "
+                    "off the border, %zu left\n",
+                    r.flat_faces.found, r.flat_faces.flipped, r.flat_faces.removed,
+                    r.flat_faces.left);
     double total = 0;
     for (const auto& t : r.timings) total += t.second;
     std::printf("  %.2f s, peak memory %.0f MB\n", total, double(peak_memory_bytes()) / 1e6);

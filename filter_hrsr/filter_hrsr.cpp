@@ -118,6 +118,11 @@ void FilterHrsrPlugin::log_summary(const hrsr::ReconstructionReport& r, double s
                 r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after,
                 r.fold_removal.vertices_removed, r.fold_removal.holes_refilled,
                 r.fold_removal.faces_cut, r.fold_removal.pairs_after);
+    if (r.flat_faces.found > 0)
+        log_message("HRsR: %zu faces without area (corners on one line, D-36): %zu edges flipped, "
+                    "%zu taken off the border, %zu left",
+                    r.flat_faces.found, r.flat_faces.flipped, r.flat_faces.removed,
+                    r.flat_faces.left);
 }
 
 // A new layer is added; the input only changes its selection (select_dropped). MM_VERTNUMBER

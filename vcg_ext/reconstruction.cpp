@@ -7,6 +7,7 @@
 #include "hrsr/unsampled_triangles.h"
 #include "index_types.h"
 #include "mesh/fans.h"
+#include "mesh/flat_faces.h"
 #include "mesh/fold_removal.h"
 #include "mesh/fold_repair.h"
 #include "mesh/small_holes_fill.h"
@@ -172,6 +173,13 @@ void repair_and_remove_folds(const PointSet& input, int rounds, const Execution&
     timer.emplace(report.timings, "fold removal");
     FoldRemoval removal = remove_folds(search, mesh.vertex_normals, mesh.triangles);
     take_fold_removal(input, removal, mesh, report);
+}
+
+// D-36: faces without area in the coordinates as written go (a flip or, on the border, the face).
+void clear_flat_output_faces(const PointSet& input, Reconstruction& mesh,
+                             ReconstructionReport& report) {
+    Timer timer(report.timings, "flat faces");
+    report.flat_faces = clear_flat_faces(written_positions(input, mesh), mesh.triangles);
 }
 
 // D-33 for RsR embeds a noisy cloud along its input normals' neighbourhood mean; the vertices
@@ -345,6 +353,7 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
     assembly.reset();
     repair_and_remove_folds(input, options.fold_repair_rounds, exec, mesh, report);
+    clear_flat_output_faces(input, mesh, report);
     restore_input_normals(input, report.preprocess, mesh);
     measure_output(input, cloud.normalisation, options.orient_outward, mesh, report);
     account(input, mesh, report);
@@ -434,6 +443,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles));
     assembly.reset();
     repair_and_remove_folds(input, options.rsr.fold_repair_rounds, exec, mesh, report);
+    clear_flat_output_faces(input, mesh, report);
     measure_output(input, cloud.normalisation, options.rsr.orient_outward, mesh, report);
     account(input, mesh, report);
     require_triangles(mesh, report);

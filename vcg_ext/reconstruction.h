@@ -45,6 +45,7 @@ struct ReconstructionReport {
     std::vector<std::size_t> handle_hop_limits;
     FoldRepairStats fold_repair;             ///< D-26, on the output mesh
     FoldRemovalStats fold_removal;           ///< D-32, after D-26
+    FlatFaceStats flat_faces;                ///< D-36, after D-32
     std::vector<std::uint32_t> dropped_fold; ///< input indices of points D-32 took out
     std::size_t small_holes_filled = 0;      ///< D-28: boundary loops of at most 5 edges closed
     /// D-30 (HRsR): triangles removed for an edge no RsR candidate could be (over a hole).

@@ -26,6 +26,14 @@ struct FoldRemovalStats {
     std::size_t vertex_copies = 0;       ///< made where a cut pinched a vertex (§5.8)
 };
 
+/// D-36 (mesh/flat_faces.h): faces with collinear corners in the coordinates as written.
+struct FlatFaceStats {
+    std::size_t found = 0;   ///< flat faces in the mesh after D-32
+    std::size_t flipped = 0; ///< cleared by flipping their longest edge
+    std::size_t removed = 0; ///< cleared by removing them from the border
+    std::size_t left = 0;    ///< neither possible (runs of four collinear points)
+};
+
 /// HRsR's re-expansion (hrsr/reexpansion.h, ALGORITHM.md §8).
 struct ReexpansionStats {
     std::size_t records = 0;           ///< collapse records available

@@ -1,0 +1,89 @@
+// D-36: faces whose corners lie exactly on one line leave the output without a point lost.
+#include "mesh/exact_predicates.h"
+#include "mesh/flat_faces.h"
+#include "mesh/mesh_stats.h"
+#include "mesh/self_intersections.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+namespace hrsr {
+namespace {
+
+std::size_t flat_faces(const std::vector<Vec3>& p, const std::vector<Triangle>& triangles) {
+    std::size_t n = 0;
+    for (const Triangle& t : triangles) n += exact::collinear(p[t[0]], p[t[1]], p[t[2]]);
+    return n;
+}
+
+std::set<std::uint32_t> used_vertices(const std::vector<Triangle>& triangles) {
+    std::set<std::uint32_t> used;
+    for (const Triangle& t : triangles) used.insert(t.begin(), t.end());
+    return used;
+}
+
+// Manifold, coherently oriented, every vertex kept, no flat face, no intersecting pair.
+void expect_clean(const std::vector<Vec3>& p, const std::vector<Triangle>& before,
+                  const std::vector<Triangle>& after) {
+    const MeshStats s = measure_mesh(p.size(), after);
+    EXPECT_EQ(s.non_manifold_edges, 0u);
+    EXPECT_EQ(s.non_manifold_vertices, 0u);
+    EXPECT_EQ(s.inconsistently_oriented_edges, 0u);
+    EXPECT_EQ(used_vertices(after), used_vertices(before));
+    EXPECT_EQ(flat_faces(p, after), 0u);
+    EXPECT_TRUE(self_intersecting_pairs(p, after, {}).empty());
+}
+
+// m = (0, 0) lies on the border edge a–b, inside a closed fan: the flat face (m, b, a) closes
+// the notch above m with no area; it goes and the border runs a → m → b.
+TEST(FlatFaces, AFlatFaceOnTheBorderIsTakenOff) {
+    const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {-1, 0, 0}, {-0.5, -1, 0}, {0.5, -1, 0}};
+    const std::vector<Triangle> before = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}};
+    std::vector<Triangle> t = before;
+    const FlatFaceStats st = clear_flat_faces(p, t);
+    EXPECT_EQ(st.found, 1u);
+    EXPECT_EQ(st.removed, 1u);
+    EXPECT_EQ(st.left, 0u);
+    EXPECT_EQ(t.size(), 3u);
+    expect_clean(p, before, t);
+    EXPECT_EQ(measure_mesh(p.size(), t).boundary_edges, 5u); // one more: a–m, m–b for a–b
+}
+
+// A tip: m's only face is flat, across its longest edge a–b stands (b, a, o). The flip splits
+// that face at m into (m, a, o) and (m, o, b): the same ground, two proper triangles.
+TEST(FlatFaces, AFlatFaceInsideIsFlippedAway) {
+    const std::vector<Vec3> p = {{0.25, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}};
+    const std::vector<Triangle> before = {{0, 2, 1}, {2, 3, 1}}; // (m, b, a), (b, o, a)
+    std::vector<Triangle> t = before;
+    const FlatFaceStats st = clear_flat_faces(p, t);
+    EXPECT_EQ(st.found, 1u);
+    EXPECT_EQ(st.flipped, 1u);
+    EXPECT_EQ(t.size(), 2u);
+    expect_clean(p, before, t);
+}
+
+// Four points on one line: every face over them is flat and no flip gives proper triangles,
+// so the faces are counted as left (never a lost point or a broken mesh).
+TEST(FlatFaces, ARunOfFourCollinearPointsIsLeftAndCounted) {
+    const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}};
+    const std::vector<Triangle> before = {{0, 1, 3}, {1, 2, 3}};
+    std::vector<Triangle> t = before;
+    const FlatFaceStats st = clear_flat_faces(p, t);
+    EXPECT_EQ(st.found, 2u);
+    EXPECT_EQ(st.left + st.flipped + st.removed, 2u);
+    EXPECT_EQ(used_vertices(t), used_vertices(before));
+    EXPECT_EQ(measure_mesh(p.size(), t).non_manifold_edges, 0u);
+}
+
+// A mesh without flat faces is returned as it was.
+TEST(FlatFaces, AProperMeshIsUnchanged) {
+    const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0.5}};
+    const std::vector<Triangle> before = {{0, 1, 2}, {2, 1, 3}};
+    std::vector<Triangle> t = before;
+    EXPECT_EQ(clear_flat_faces(p, t).found, 0u);
+    EXPECT_EQ(t, before);
+}
+
+} // namespace
+} // namespace hrsr
