@@ -94,6 +94,7 @@ nlohmann::json fold_repair_json(const ReconstructionReport& r) {
             {"holes_filled_again", r.fold_removal.holes_refilled},
             {"faces_cut", r.fold_removal.faces_cut},
             {"vertex_copies", r.fold_removal.vertex_copies},
+            {"points_in_no_triangle_placed", r.fold_removal.points_placed},
             {"intersecting_pairs_left", r.fold_removal.pairs_after}};
 }
 
@@ -247,9 +248,10 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
         const FoldRemovalStats& f = r.fold_removal;
         std::printf("  folds: %zu intersecting triangle pairs, %zu edge flips, %zu pairs left; "
                     "%zu vertices taken out (%zu holes filled again), %zu faces cut, %zu pairs "
-                    "left\n",
+                    "left; %zu points in no triangle placed into a face\n",
                     r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after,
-                    f.vertices_removed, f.holes_refilled, f.faces_cut, f.pairs_after);
+                    f.vertices_removed, f.holes_refilled, f.faces_cut, f.pairs_after,
+                    f.points_placed);
     }
     if (r.flat_faces.found > 0)
         std::printf("  faces without area (corners on one line): %zu, %zu edges flipped, %zu taken "

@@ -138,13 +138,15 @@ std::vector<Vec3> written_positions(const PointSet& input, const Reconstruction&
 }
 
 // D-32's result as the output: vertices without a face go (their points are "dropped: fold"),
-// copies of pinched vertices are appended.
-void take_fold_removal(const PointSet& input, FoldRemoval& removal, Reconstruction& mesh,
-                       ReconstructionReport& report) {
+// copies of pinched vertices are appended. The vertices from `given` on were points in no
+// triangle (D-37): those placed into a face leave report.not_in_triangle, the rest stay in it.
+void take_fold_removal(const PointSet& input, FoldRemoval& removal, std::size_t given,
+                       Reconstruction& mesh, ReconstructionReport& report) {
     report.fold_removal = removal.stats;
-    if (removal.stats.pairs_before == 0) return; // nothing changed
+    if (removal.stats.pairs_before == 0 && given == mesh.vertex_input_index.size())
+        return; // nothing changed
     std::vector<std::uint8_t> was_vertex(input.size(), 0), is_vertex(input.size(), 0);
-    for (std::uint32_t i : mesh.vertex_input_index) was_vertex[i] = 1;
+    for (std::size_t v = 0; v < given; ++v) was_vertex[mesh.vertex_input_index[v]] = 1;
     Reconstruction out;
     out.triangles = std::move(mesh.triangles);
     for (std::uint32_t v : removal.vertex_source) {
@@ -155,16 +157,38 @@ void take_fold_removal(const PointSet& input, FoldRemoval& removal, Reconstructi
     mesh = std::move(out);
     for (std::uint32_t i = 0; i < input.size(); ++i)
         if (was_vertex[i] && !is_vertex[i]) report.dropped_fold.push_back(i);
+    std::vector<std::uint32_t>& unplaced = report.not_in_triangle;
+    unplaced.erase(std::remove_if(unplaced.begin(), unplaced.end(),
+                                  [&](std::uint32_t i) { return is_vertex[i] != 0; }),
+                   unplaced.end());
     report.vertex_copies += removal.stats.vertex_copies;
+}
+
+// D-37: the points in no triangle join the mesh as vertices without a face, with their oriented
+// normals, for D-32's last step to place into a face near them. Returns the vertices before.
+std::size_t append_points_in_no_triangle(const PreparedCloud& cloud,
+                                         const ReconstructionReport& report, Reconstruction& mesh) {
+    const std::size_t given = mesh.vertex_input_index.size();
+    if (report.not_in_triangle.empty()) return given;
+    std::vector<std::uint32_t> point_of(report.preprocess.input_points, ~0u);
+    for (PointIndex p : cloud.input_index.keys())
+        point_of[cloud.input_index[p].value()] = p.value();
+    for (std::uint32_t i : report.not_in_triangle) {
+        mesh.vertex_input_index.push_back(i);
+        mesh.vertex_normals.push_back(cloud.normals[point_of[i]]);
+    }
+    return given;
 }
 
 // The fold repair on the finished mesh, on the coordinates as written: one search for the
 // intersecting pairs, D-26's flips, then D-32 cuts out what they left, so that the written mesh
 // has no intersecting pair. rounds = 0 turns both off.
-void repair_and_remove_folds(const PointSet& input, int rounds, const Execution& exec,
-                             Reconstruction& mesh, ReconstructionReport& report) {
+void repair_and_remove_folds(const PointSet& input, const PreparedCloud& cloud, int rounds,
+                             const Execution& exec, Reconstruction& mesh,
+                             ReconstructionReport& report) {
     if (rounds <= 0 || mesh.triangles.size() < 2) return;
     if (exec.progress) exec.progress->begin("fold repair");
+    const std::size_t given = append_points_in_no_triangle(cloud, report, mesh);
     const std::vector<Vec3> written = written_positions(input, mesh);
     std::optional<Timer> timer(std::in_place, report.timings, "fold search");
     FoldSearch search(written, mesh.triangles, exec);
@@ -172,7 +196,7 @@ void repair_and_remove_folds(const PointSet& input, int rounds, const Execution&
     report.fold_repair = repair_folds(search, mesh.triangles, rounds);
     timer.emplace(report.timings, "fold removal");
     FoldRemoval removal = remove_folds(search, mesh.vertex_normals, mesh.triangles);
-    take_fold_removal(input, removal, mesh, report);
+    take_fold_removal(input, removal, given, mesh, report);
 }
 
 // D-36: faces without area in the coordinates as written go (a flip or, on the border, the face).
@@ -352,7 +376,7 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     report.vertex_copies = m.copies;
     Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
     assembly.reset();
-    repair_and_remove_folds(input, options.fold_repair_rounds, exec, mesh, report);
+    repair_and_remove_folds(input, cloud, options.fold_repair_rounds, exec, mesh, report);
     clear_flat_output_faces(input, mesh, report);
     restore_input_normals(input, report.preprocess, mesh);
     measure_output(input, cloud.normalisation, options.orient_outward, mesh, report);
@@ -442,7 +466,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     for (VertexIndex v : out.vertex_point) vertex_point.push_back(fine.vertex_node[v]);
     Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles));
     assembly.reset();
-    repair_and_remove_folds(input, options.rsr.fold_repair_rounds, exec, mesh, report);
+    repair_and_remove_folds(input, cloud, options.rsr.fold_repair_rounds, exec, mesh, report);
     clear_flat_output_faces(input, mesh, report);
     measure_output(input, cloud.normalisation, options.rsr.orient_outward, mesh, report);
     account(input, mesh, report);

@@ -24,6 +24,7 @@ struct FoldRemovalStats {
     std::size_t holes_refilled = 0;      ///< holes of those fans triangulated again
     std::size_t faces_cut = 0;           ///< faces taken out without a fill (the last resort)
     std::size_t vertex_copies = 0;       ///< made where a cut pinched a vertex (§5.8)
+    std::size_t points_placed = 0;       ///< points in no triangle put into a face (D-37)
 };
 
 /// D-36 (mesh/flat_faces.h): faces with collinear corners in the coordinates as written.

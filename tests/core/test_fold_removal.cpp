@@ -173,6 +173,38 @@ TEST(FoldRemoval, TakenOutVerticesGoBackOnceTheFoldsAreResolved) {
     EXPECT_EQ(r.positions.size(), m.positions.size() - r.removal.stats.vertices_removed);
 }
 
+// D-37: vertices given without a face (points in no triangle) go into a face near them as D-32's
+// put-back places what it took out: here one just above a flat patch's face goes in, one high
+// above it (a spike: 0.8 spacings) and one whose normal faces away (the other side of a sheet) stay out, and
+// nothing else changes.
+TEST(FoldRemoval, PointsInNoTriangleArePlacedIntoAFaceWhereTheyFit) {
+    TestMesh m = testing::square_patch(8);
+    const std::size_t patch_vertices = m.positions.size();
+    std::vector<Vec3> normals(patch_vertices, Vec3(0, 0, 1));
+    m.positions.emplace_back(0.40, 0.33, 0.01); // over a face, a tenth of a spacing up: goes in
+    normals.emplace_back(0, 0, 1);
+    m.positions.emplace_back(0.65, 0.30, 0.10); // over half the longest side up: stays out
+    normals.emplace_back(0, 0, 1);
+    m.positions.emplace_back(0.30, 0.70, 0.01); // facing away: stays out
+    normals.emplace_back(0, 0, -1);
+    std::vector<Triangle> triangles = m.triangles;
+    const FoldRemoval removal = remove_folds(m.positions, normals, triangles, {});
+    EXPECT_EQ(removal.stats.pairs_before, 0u);
+    EXPECT_EQ(removal.stats.points_placed, 1u);
+    EXPECT_EQ(removal.stats.vertices_removed, 0u);
+    ASSERT_EQ(removal.vertex_source.size(), patch_vertices + 1);
+    EXPECT_EQ(removal.vertex_source.back(), patch_vertices); // the first extra point
+    EXPECT_EQ(triangles.size(), m.triangles.size() + 2);     // a face split in three
+    std::vector<Vec3> positions;
+    for (std::uint32_t v : removal.vertex_source) positions.push_back(m.positions[v]);
+    EXPECT_TRUE(self_intersecting_pairs(positions, triangles, {}).empty());
+    const MeshStats s = measure_mesh(positions.size(), triangles);
+    EXPECT_EQ(s.boundary_edges, 32u);
+    EXPECT_EQ(s.non_manifold_edges + s.non_manifold_vertices, 0u);
+    EXPECT_EQ(s.inconsistently_oriented_edges, 0u);
+    EXPECT_EQ(s.unreferenced_vertices, 0u);
+}
+
 // The shipped sample at the defaults, both methods: the written coordinates (float) have no
 // intersecting pair, every point taken out is reported as dropped in a fold, and r_v stays.
 TEST(FoldRemoval, OwlAtDefaultsHasNoIntersectingPair) {

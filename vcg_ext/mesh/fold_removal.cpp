@@ -130,6 +130,7 @@ public:
         put_back_the_rest();
         stats.vertices_removed += disc_vertices_;
         stats.vertices_reinserted = reinserted_;
+        stats.points_placed = placed_;
         stats.vertices_removed -= reinserted_;
         stats.pairs_after = std::size_t(std::count_if(pairs_.begin(), pairs_.end(), [&](auto p) {
             return alive_[p.first] && alive_[p.second];
@@ -604,9 +605,21 @@ private:
     // edge's two faces into four. Every new triangle is proper, faces its corners' normals,
     // turns the way the face it replaces does (the point lies over it) and crosses no standing
     // face; of those that fit, the split with the largest smallest angle.
+    // D-37: vertices that never had a face (points in no triangle, given as such) go the same
+    // way, within a grid cell of where they are.
     void put_back_the_rest() {
-        for (std::uint32_t v = 0; v + 1 < at_.start.size(); ++v)
-            if (lost_all_faces(v) && representative_[v] == v && put_back(v)) ++reinserted_;
+        for (std::uint32_t v = 0; v + 1 < at_.start.size(); ++v) {
+            if (representative_[v] != v) continue;
+            if (lost_all_faces(v)) {
+                reinserted_ += put_back(v, false);
+            } else if (never_had_a_face(v)) {
+                placed_ += put_back(v, true);
+            }
+        }
+    }
+
+    bool never_had_a_face(std::uint32_t v) const {
+        return at_.begin(v) == at_.end(v) && !any_face(v, [](const Triangle&) { return true; });
     }
 
     // v had faces and has none now (the original ones are looked at first: no map lookup for
@@ -624,8 +637,10 @@ private:
         std::vector<std::uint32_t> source; ///< per triangle: the face it lies over
     };
 
-    // v's old fan's mean edge: how far from v a face may be to take it back.
+    // v's old fan's mean edge: how far from v a face may be to take it back (a vertex that had
+    // no fan: a cell of the grid, about two mean face sizes).
     double fan_reach(std::uint32_t v) const {
+        if (at_.begin(v) == at_.end(v)) return grid_.cell_size();
         double sum = 0;
         std::size_t edges = 0;
         for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
@@ -684,15 +699,20 @@ private:
                kMaxPutBackHeight * longest * n.Norm();
     }
 
-    bool put_back(std::uint32_t v) {
+    // `own_facing`: the face must also face v's own normal (a point that never had a fan may
+    // belong to the other side of a sheet; the sum of the corners' normals would not tell).
+    bool put_back(std::uint32_t v, bool own_facing) {
         std::vector<Split> splits = splits_near(v);
         std::vector<std::pair<double, std::size_t>> candidates; // (−smallest angle, split)
         Box reach{positions_[v], positions_[v]};                // of every candidate's triangles
         for (std::size_t i = 0; i < splits.size(); ++i) {
             const Split& split = splits[i];
             double smallest = 4;
-            bool proper_split = std::all_of(split.faces.begin(), split.faces.end(),
-                                            [&](std::uint32_t f) { return low_over(v, f); });
+            bool proper_split =
+                std::all_of(split.faces.begin(), split.faces.end(), [&](std::uint32_t f) {
+                    return low_over(v, f) &&
+                           (!own_facing || normal_of(triangles_[f]).dot(normals_[v]) > 0);
+                });
             for (std::size_t k = 0; k < split.triangles.size() && proper_split; ++k) {
                 const Triangle& t = split.triangles[k];
                 proper_split = normal_of(t).dot(normal_of(triangles_[split.source[k]])) > 0 &&
@@ -984,6 +1004,7 @@ private:
     FacesNearBox near_;                      ///< gather_standing()'s faces
     std::uint32_t blocker_ = kNoFace;        ///< the standing face that the last fill crossed
     std::size_t reinserted_ = 0;             ///< removed vertices put back (reinsert)
+    std::size_t placed_ = 0;                 ///< vertices without a face given, placed (D-37)
     std::vector<Triangle> inner_cuts_;       ///< faces cut with no edge on the border
     std::vector<std::uint32_t> cut_corners_; ///< the corners of every face cut
     std::size_t disc_vertices_ = 0;          ///< vertices beyond one that close_cut's discs removed

@@ -110,6 +110,9 @@ public:
                 for (std::uint64_t z = lo[2]; z <= hi[2]; ++z) visit(index(x, y, z));
     }
 
+    /// A cell's side: about twice the mean extent of a face.
+    double cell_size() const { return cell_; }
+
     /// Faces filed in the cells `box` covers (possibly repeated), those filed again included.
     void query(const Box& box, std::vector<std::uint32_t>& out) const {
         for_each_cell(box, [&](std::uint64_t c) {
