@@ -110,7 +110,11 @@ TEST(FoldRemoval, FlatFoldOnFloats) {
     const TestMesh m = testing::flat_fold_on_floats();
     const Removed r = remove(m);
     EXPECT_TRUE(self_intersecting_pairs(r.positions, r.triangles, {}).empty());
-    EXPECT_EQ(r.triangles.size(), 1u); // a border vertex with one face: the face goes
+    // Corner 0's fan goes and the hole is filled with (1, 2, 3); then 0 goes back beyond the
+    // fill's corner at 3 (D-37's corner fill): three triangles tile the first, no point lost.
+    EXPECT_EQ(r.triangles.size(), 3u);
+    EXPECT_EQ(r.positions.size(), 4u);
+    EXPECT_EQ(r.removal.stats.vertices_reinserted, 1u);
 }
 
 TEST(FoldRemoval, CleanMeshUnchanged) {
@@ -175,8 +179,8 @@ TEST(FoldRemoval, TakenOutVerticesGoBackOnceTheFoldsAreResolved) {
 
 // D-37: vertices given without a face (points in no triangle) go into a face near them as D-32's
 // put-back places what it took out: here one just above a flat patch's face goes in, one high
-// above it (a spike: 0.8 spacings) and one whose normal faces away (the other side of a sheet) stay out, and
-// nothing else changes.
+// above it (a spike: 0.8 spacings) and one whose normal faces away (the other side of a sheet) stay
+// out, and nothing else changes.
 TEST(FoldRemoval, PointsInNoTriangleArePlacedIntoAFaceWhereTheyFit) {
     TestMesh m = testing::square_patch(8);
     const std::size_t patch_vertices = m.positions.size();
@@ -203,6 +207,31 @@ TEST(FoldRemoval, PointsInNoTriangleArePlacedIntoAFaceWhereTheyFit) {
     EXPECT_EQ(s.non_manifold_edges + s.non_manifold_vertices, 0u);
     EXPECT_EQ(s.inconsistently_oriented_edges, 0u);
     EXPECT_EQ(s.unreferenced_vertices, 0u);
+}
+
+// D-37 at the border: a point beyond a concave corner of the border (a patch without its last
+// cell and corner vertex) closes the corner with two triangles; the border keeps its length.
+TEST(FoldRemoval, APointBeyondABorderCornerClosesIt) {
+    TestMesh m = testing::square_patch(8);
+    m.positions.pop_back(); // the corner (1, 1): its cell's two triangles are the last two
+    m.triangles.resize(m.triangles.size() - 2);
+    const std::size_t patch_vertices = m.positions.size();
+    const std::size_t patch_border = measure_mesh(patch_vertices, m.triangles).boundary_edges;
+    std::vector<Vec3> normals(patch_vertices, Vec3(0, 0, 1));
+    m.positions.emplace_back(0.95, 0.95, 0.002);
+    normals.emplace_back(0, 0, 1);
+    std::vector<Triangle> triangles = m.triangles;
+    const FoldRemoval removal = remove_folds(m.positions, normals, triangles, {});
+    EXPECT_EQ(removal.stats.points_placed, 1u);
+    ASSERT_EQ(removal.vertex_source.size(), patch_vertices + 1);
+    EXPECT_EQ(triangles.size(), m.triangles.size() + 2);
+    std::vector<Vec3> positions;
+    for (std::uint32_t v : removal.vertex_source) positions.push_back(m.positions[v]);
+    EXPECT_TRUE(self_intersecting_pairs(positions, triangles, {}).empty());
+    const MeshStats s = measure_mesh(positions.size(), triangles);
+    EXPECT_EQ(s.boundary_edges, patch_border);
+    EXPECT_EQ(s.non_manifold_edges + s.non_manifold_vertices, 0u);
+    EXPECT_EQ(s.inconsistently_oriented_edges, 0u);
 }
 
 // The shipped sample at the defaults, both methods: the written coordinates (float) have no

@@ -29,6 +29,9 @@ constexpr double kClosingReach = 1.5;
 // A removed vertex goes back over a face at most this many of the face's longest sides off its
 // plane (the lion's put back lie at a median of 0.13, 90 % under 0.38; a few reached 0.98).
 constexpr double kMaxPutBackHeight = 0.5;
+// A vertex beyond a border corner goes back as two triangles closing it only if no angle of
+// them is smaller (a sliver along the border is worse than a point left out).
+constexpr double kMinBorderPutBackAngle = 15.0 * M_PI / 180.0;
 constexpr std::uint32_t kNoFace = ~0u;
 
 /// A ball that a disc of fans stays in.
@@ -602,9 +605,10 @@ private:
 
     // Removed vertices that no hole took back, once every fold is resolved: each over a
     // standing face near it, splitting that face into three or, over one of its edges, the
-    // edge's two faces into four. Every new triangle is proper, faces its corners' normals,
-    // turns the way the face it replaces does (the point lies over it) and crosses no standing
-    // face; of those that fit, the split with the largest smallest angle.
+    // edge's two faces into four, or beyond a border edge as a triangle on it (D-37). Every new
+    // triangle is proper, faces its corners' normals, turns the way the face it replaces (or
+    // borders) does and crosses no standing face; of those that fit, the split with the largest
+    // smallest angle.
     // D-37: vertices that never had a face (points in no triangle, given as such) go the same
     // way, within a grid cell of where they are.
     void put_back_the_rest() {
@@ -632,9 +636,9 @@ private:
     }
 
     struct Split {
-        std::vector<std::uint32_t> faces;  ///< replaced
+        std::vector<std::uint32_t> faces;  ///< replaced (none for a triangle beyond the border)
         std::vector<Triangle> triangles;   ///< instead
-        std::vector<std::uint32_t> source; ///< per triangle: the face it lies over
+        std::vector<std::uint32_t> source; ///< per triangle: the face it lies over (or beside)
     };
 
     // v's old fan's mean edge: how far from v a face may be to take it back (a vertex that had
@@ -676,8 +680,12 @@ private:
             splits.push_back({{f}, {three.begin(), three.end()}, {f, f, f}});
             for (int k = 0; k < 3; ++k) {
                 const std::optional<std::uint32_t> g = across(f, k);
-                if (!g || *g < f) continue; // each edge once
                 const std::uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+                if (!g) {
+                    add_corner_fill(f, a, b, v, splits);
+                    continue;
+                }
+                if (*g < f) continue; // each edge once
                 std::uint32_t d = a;
                 for (std::uint32_t w : triangles_[*g])
                     if (w != a && w != b) d = w;
@@ -686,6 +694,24 @@ private:
             }
         }
         return splits;
+    }
+
+    // v beyond the border at b, between the border edges a → b (of face f) and b → c: the
+    // triangles (b, a, v) and (c, b, v) close b's corner, and the border runs a → v → c, as long
+    // as before (a point left out is worth less than no sliver along the border).
+    void add_corner_fill(std::uint32_t f, std::uint32_t a, std::uint32_t b, std::uint32_t v,
+                         std::vector<Split>& splits) const {
+        for (std::uint32_t g : faces_of(b)) {
+            const Triangle& t = triangles_[g];
+            for (int j = 0; j < 3; ++j) {
+                if (t[j] != b || across(g, j)) continue;
+                const std::uint32_t c = t[(j + 1) % 3];
+                const Triangle first{b, a, v}, second{c, b, v};
+                if (c != a && std::min(angle(first), angle(second)) >= kMinBorderPutBackAngle)
+                    splits.push_back({{}, {first, second}, {f, g}});
+                return;
+            }
+        }
     }
 
     // v is at most half face f's longest side off its plane (not a spike).
@@ -709,7 +735,7 @@ private:
             const Split& split = splits[i];
             double smallest = 4;
             bool proper_split =
-                std::all_of(split.faces.begin(), split.faces.end(), [&](std::uint32_t f) {
+                std::all_of(split.source.begin(), split.source.end(), [&](std::uint32_t f) {
                     return low_over(v, f) &&
                            (!own_facing || normal_of(triangles_[f]).dot(normals_[v]) > 0);
                 });
@@ -721,8 +747,8 @@ private:
             }
             if (!proper_split) continue;
             candidates.emplace_back(-smallest, i);
-            for (std::uint32_t f : split.faces)
-                for (std::uint32_t w : triangles_[f]) reach.add(positions_[w]);
+            for (const Triangle& t : split.triangles)
+                for (std::uint32_t w : t) reach.add(positions_[w]);
         }
         if (candidates.empty()) return false;
         std::sort(candidates.begin(), candidates.end());
