@@ -1,21 +1,29 @@
 #include "mesh/welding.h"
 
 #include <algorithm>
-#include <numeric>
 #include <tuple>
 
 namespace hrsr {
 
 std::vector<std::uint32_t> same_position_representatives(const std::vector<Vec3>& p) {
-    std::vector<std::uint32_t> order(p.size());
-    std::iota(order.begin(), order.end(), 0u);
-    const auto key = [&](std::uint32_t i) { return std::make_tuple(p[i][0], p[i][1], p[i][2], i); };
-    std::sort(order.begin(), order.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    // Sorted as values next to their index: the comparisons then read memory in order (sorting
+    // indices that look their positions up was a tenth of the fold search on the lion).
+    struct Keyed {
+        double x, y, z;
+        std::uint32_t i;
+        bool operator<(const Keyed& o) const {
+            return std::tie(x, y, z, i) < std::tie(o.x, o.y, o.z, o.i);
+        }
+    };
+    std::vector<Keyed> order(p.size());
+    for (std::uint32_t i = 0; i < p.size(); ++i) order[i] = {p[i][0], p[i][1], p[i][2], i};
+    std::sort(order.begin(), order.end());
     std::vector<std::uint32_t> representative(p.size());
     for (std::size_t s = 0; s < order.size(); ++s) {
-        const bool same = s > 0 && p[order[s]] == p[order[s - 1]];
-        representative[order[s]] = same ? representative[order[s - 1]] : order[s];
+        const Keyed& k = order[s];
+        const bool same =
+            s > 0 && k.x == order[s - 1].x && k.y == order[s - 1].y && k.z == order[s - 1].z;
+        representative[k.i] = same ? representative[order[s - 1].i] : k.i;
     }
     return representative;
 }
