@@ -76,6 +76,18 @@ TEST(FlatFaces, ARunOfFourCollinearPointsIsLeftAndCounted) {
     EXPECT_EQ(measure_mesh(p.size(), t).non_manifold_edges, 0u);
 }
 
+// A mesh that is not a manifold (three faces on one edge) is left as it is, its flat face
+// counted as left: the pass never fails a reconstruction.
+TEST(FlatFaces, ANonManifoldMeshIsLeftAsItIs) {
+    const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0.5, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0.5}};
+    const std::vector<Triangle> before = {{0, 2, 1}, {0, 1, 3}, {1, 0, 4}, {0, 1, 4}};
+    std::vector<Triangle> t = before;
+    const FlatFaceStats st = clear_flat_faces(p, t);
+    EXPECT_EQ(st.found, 1u);
+    EXPECT_EQ(st.left, 1u);
+    EXPECT_EQ(t, before);
+}
+
 // A mesh without flat faces is returned as it was.
 TEST(FlatFaces, AProperMeshIsUnchanged) {
     const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0.5}};

@@ -57,7 +57,8 @@ public:
         for (int k = 0; k < n; ++k) {
             int e = 0;
             const double mantissa = std::frexp(values[k], &e);
-            mpz_set_si(z_[k], long(std::ldexp(mantissa, kMantissaBits))); // 0 stays 0
+            // An integer below 2^53: exact in mpz_set_d (a long may have 32 bits); 0 stays 0.
+            mpz_set_d(z_[k], std::ldexp(mantissa, kMantissaBits));
             if (values[k] != 0) mpz_mul_2exp(z_[k], z_[k], mp_bitcnt_t(e - lowest));
         }
     }

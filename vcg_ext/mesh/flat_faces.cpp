@@ -3,6 +3,9 @@
 #include "mesh/exact_predicates.h"
 #include "mesh/split_mesh.h"
 
+#include <optional>
+#include <stdexcept>
+
 namespace hrsr {
 
 namespace {
@@ -39,15 +42,22 @@ public:
 private:
     const Vec3& at(const SFace* f, int k) const { return positions_[mesh_.vertex_of(f, k)]; }
 
-    // The edge opposite the corner that lies between the other two.
+    // The edge opposite the corner that lies between the other two, decided exactly: along a
+    // line, every coordinate that is not the same for all three points orders them as the line
+    // does (rounded lengths could tie and pick an end).
     int longest_edge(const SFace* f) const {
-        int best = 0;
-        double longest = -1;
-        for (int z = 0; z < 3; ++z) {
-            const double l = (at(f, (z + 1) % 3) - at(f, z)).SquaredNorm();
-            if (l > longest) longest = l, best = z;
+        const Vec3 &p0 = at(f, 0), &p1 = at(f, 1), &p2 = at(f, 2);
+        for (int axis = 0; axis < 3; ++axis) {
+            const double x0 = p0[axis], x1 = p1[axis], x2 = p2[axis];
+            if (x0 == x1 && x1 == x2) continue;
+            const auto between = [](double lo, double x, double hi) {
+                return (lo <= x && x <= hi) || (hi <= x && x <= lo);
+            };
+            if (between(x1, x0, x2)) return 1; // corner 0 in the middle: edge 1 → 2
+            if (between(x0, x1, x2)) return 2;
+            return 0;
         }
-        return best;
+        return 0; // all three at one position: no flip or removal will fit
     }
 
     // The flip joins m to the far corner o of the face g across edge z: (m, a, o) and
@@ -80,7 +90,16 @@ FlatFaceStats clear_flat_faces(const std::vector<Vec3>& positions,
         stats.found += exact::collinear(positions[t[0]], positions[t[1]], positions[t[2]]);
     if (stats.found == 0) return stats;
 
-    FlatFaces mesh(positions, triangles);
+    // The mesh after D-32 is a consistently oriented manifold; should it not be, the faces stay
+    // as they are (counted as left) rather than the reconstruction failing here.
+    std::optional<FlatFaces> built;
+    try {
+        built.emplace(positions, triangles);
+    } catch (const std::logic_error&) {
+        stats.left = stats.found;
+        return stats;
+    }
+    FlatFaces& mesh = *built;
     std::vector<SFace*> flat;
     for (SFace* f : mesh.live_faces())
         if (mesh.flat(f)) flat.push_back(f);
@@ -89,16 +108,12 @@ FlatFaceStats clear_flat_faces(const std::vector<Vec3>& positions,
     for (bool progress = true; progress;) {
         progress = false;
         std::vector<SFace*> kept;
-        for (SFace* f : flat) {
-            if (!mesh.flat(f)) { // a flat face across a flipped edge is rewritten as a proper one
-                ++stats.flipped;
-                continue;
-            }
+        // A flip rewrites only f and the face across, which is never flat (o off the line).
+        for (SFace* f : flat)
             if (mesh.clear(f, stats))
                 progress = true;
             else
                 kept.push_back(f);
-        }
         flat.swap(kept);
     }
     stats.left = flat.size();

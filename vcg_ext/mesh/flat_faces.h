@@ -17,7 +17,9 @@ namespace hrsr {
 /// can intersect that did not before); on the border the flat face is removed (the border then
 /// runs through m), if every corner keeps a face and m one fan. Faces for which neither holds
 /// (a run of four points on one line) are counted as left. `triangles` must be a consistently
-/// oriented manifold; its vertices and all other faces are kept, in their order. Sequential.
+/// oriented manifold (if not, nothing changes and every flat face is counted as left). Its
+/// vertices are kept; faces are kept in their order, those across a flipped edge rewritten.
+/// Sequential.
 FlatFaceStats clear_flat_faces(const std::vector<Vec3>& positions,
                                std::vector<Triangle>& triangles);
 

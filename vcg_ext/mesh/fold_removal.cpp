@@ -32,6 +32,8 @@ constexpr double kMaxPutBackHeight = 0.5;
 // A vertex beyond a border corner goes back as two triangles closing it only if no angle of
 // them is smaller (a sliver along the border is worse than a point left out).
 constexpr double kMinBorderPutBackAngle = 15.0 * M_PI / 180.0;
+// A walk around a vertex's fan gives up after this many faces (a fan is far smaller).
+constexpr std::size_t kMaxFanWalk = 1024;
 constexpr std::uint32_t kNoFace = ~0u;
 
 /// A ball that a disc of fans stays in.
@@ -605,10 +607,10 @@ private:
 
     // Removed vertices that no hole took back, once every fold is resolved: each over a
     // standing face near it, splitting that face into three or, over one of its edges, the
-    // edge's two faces into four, or beyond a border edge as a triangle on it (D-37). Every new
-    // triangle is proper, faces its corners' normals, turns the way the face it replaces (or
-    // borders) does and crosses no standing face; of those that fit, the split with the largest
-    // smallest angle.
+    // edge's two faces into four, or beyond a border vertex as two triangles closing its corner
+    // (D-37). Every new triangle is proper, faces its corners' normals, turns the way the face
+    // it replaces (or borders) does and crosses no standing face; of those that fit, the split
+    // with the largest smallest angle.
     // D-37: vertices that never had a face (points in no triangle, given as such) go the same
     // way, within a grid cell of where they are.
     void put_back_the_rest() {
@@ -682,7 +684,7 @@ private:
                 const std::optional<std::uint32_t> g = across(f, k);
                 const std::uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
                 if (!g) {
-                    add_corner_fill(f, a, b, v, splits);
+                    add_corner_fill(f, k, v, splits);
                     continue;
                 }
                 if (*g < f) continue; // each edge once
@@ -698,20 +700,26 @@ private:
 
     // v beyond the border at b, between the border edges a → b (of face f) and b → c: the
     // triangles (b, a, v) and (c, b, v) close b's corner, and the border runs a → v → c, as long
-    // as before (a point left out is worth less than no sliver along the border).
-    void add_corner_fill(std::uint32_t f, std::uint32_t a, std::uint32_t b, std::uint32_t v,
+    // as before (a point left out is worth less than no sliver along the border). The edge
+    // b → c is found by walking b's fan from f, so that it is f's own fan's other side (b may
+    // still be pinched between D-32's cuts).
+    void add_corner_fill(std::uint32_t f, int k, std::uint32_t v,
                          std::vector<Split>& splits) const {
-        for (std::uint32_t g : faces_of(b)) {
-            const Triangle& t = triangles_[g];
-            for (int j = 0; j < 3; ++j) {
-                if (t[j] != b || across(g, j)) continue;
-                const std::uint32_t c = t[(j + 1) % 3];
-                const Triangle first{b, a, v}, second{c, b, v};
-                if (c != a && std::min(angle(first), angle(second)) >= kMinBorderPutBackAngle)
-                    splits.push_back({{}, {first, second}, {f, g}});
-                return;
-            }
+        const std::uint32_t a = triangles_[f][k], b = triangles_[f][(k + 1) % 3];
+        std::uint32_t g = f;
+        int j = (k + 1) % 3; // g's edge b → next
+        for (std::size_t steps = 0;; ++steps) {
+            const std::optional<std::uint32_t> next = across(g, j);
+            if (!next) break;
+            if (*next == f || steps > kMaxFanWalk) return; // a closed fan: no corner here
+            g = *next;
+            j = int(std::find(triangles_[g].begin(), triangles_[g].end(), b) -
+                    triangles_[g].begin());
         }
+        const std::uint32_t c = triangles_[g][(j + 1) % 3];
+        const Triangle first{b, a, v}, second{c, b, v};
+        if (c != a && std::min(angle(first), angle(second)) >= kMinBorderPutBackAngle)
+            splits.push_back({{}, {first, second}, {f, g}});
     }
 
     // v is at most half face f's longest side off its plane (not a spike).

@@ -36,7 +36,8 @@ struct FoldRemoval {
 /// one fan per vertex: only the corners of faces cut or added are split when pinched) is
 /// rewritten over the result's vertices: kept faces in their order, then the new ones. Last, the
 /// vertices taken out and those given without any face (D-37: points in no triangle) go into a
-/// standing face near them where that fits; vertices still without a face are not in the result.
+/// standing face near them, or close a border corner next to them, where that fits; vertices
+/// still without a face are not in the result.
 FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
                          std::vector<Triangle>& triangles, const Execution& exec);
 
