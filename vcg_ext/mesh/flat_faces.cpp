@@ -19,8 +19,6 @@ public:
     FlatFaces(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles)
         : positions_(positions), mesh_(positions, triangles, positions.size(), triangles.size()) {}
 
-    bool flat(const SFace* f) const { return exact::collinear(at(f, 0), at(f, 1), at(f, 2)); }
-
     // Clears f if it can; false leaves it as it is.
     bool clear(SFace* f, FlatFaceStats& stats) {
         const int z = longest_edge(f);
@@ -86,8 +84,13 @@ private:
 FlatFaceStats clear_flat_faces(const std::vector<Vec3>& positions,
                                std::vector<Triangle>& triangles) {
     FlatFaceStats stats;
-    for (const Triangle& t : triangles)
-        stats.found += exact::collinear(positions[t[0]], positions[t[1]], positions[t[2]]);
+    std::vector<std::size_t> flat_at; // by face number: one exact test per face
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+        const Triangle& t = triangles[f];
+        if (exact::collinear(positions[t[0]], positions[t[1]], positions[t[2]]))
+            flat_at.push_back(f);
+    }
+    stats.found = flat_at.size();
     if (stats.found == 0) return stats;
 
     // The mesh after D-32 is a consistently oriented manifold; should it not be, the faces stay
@@ -100,9 +103,9 @@ FlatFaceStats clear_flat_faces(const std::vector<Vec3>& positions,
         return stats;
     }
     FlatFaces& mesh = *built;
+    const std::vector<SFace*> faces = mesh.live_faces(); // in the order of `triangles`
     std::vector<SFace*> flat;
-    for (SFace* f : mesh.live_faces())
-        if (mesh.flat(f)) flat.push_back(f);
+    for (std::size_t f : flat_at) flat.push_back(faces[f]);
     // A clearing can open the way for another (a flip next to a run of flat faces), so the
     // list is walked until a pass clears nothing; each pass clears or keeps every face.
     for (bool progress = true; progress;) {
