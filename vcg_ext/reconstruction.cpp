@@ -143,8 +143,10 @@ std::vector<Vec3> written_positions(const PointSet& input, const Reconstruction&
 void take_fold_removal(const PointSet& input, FoldRemoval& removal, std::size_t given,
                        Reconstruction& mesh, ReconstructionReport& report) {
     report.fold_removal = removal.stats;
-    if (removal.stats.pairs_before == 0 && given == mesh.vertex_input_index.size())
-        return; // nothing changed
+    const std::vector<std::uint32_t>& source = removal.vertex_source;
+    bool same_vertices = given == mesh.vertex_input_index.size() && source.size() == given;
+    for (std::size_t v = 0; same_vertices && v < source.size(); ++v) same_vertices = source[v] == v;
+    if (same_vertices) return; // every vertex kept its number (D-32 and D-38 may change faces)
     std::vector<std::uint8_t> was_vertex(input.size(), 0), is_vertex(input.size(), 0);
     for (std::size_t v = 0; v < given; ++v) was_vertex[mesh.vertex_input_index[v]] = 1;
     Reconstruction out;

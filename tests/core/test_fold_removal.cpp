@@ -95,6 +95,20 @@ TEST(FoldRemoval, AFoldAtABoundary) {
     expect_clean(m, r, 4);
 }
 
+// Two faces on one place (STATUS gap 19) are a pair: the fold goes, and no point with it.
+TEST(FoldRemoval, AFinThroughACopyGoes) {
+    const TestMesh m = testing::fin_through_a_copy();
+    ASSERT_EQ(self_intersecting_pairs(m.positions, m.triangles, {}).size(), 1u);
+    const Removed r = remove(m);
+    expect_clean(m, r, 0);
+    EXPECT_EQ(r.positions.size(), m.positions.size());
+    std::vector<Triangle> welded =
+        welded_triangles(r.triangles, same_position_representatives(r.positions));
+    for (Triangle& t : welded) std::sort(t.begin(), t.end());
+    std::sort(welded.begin(), welded.end());
+    EXPECT_EQ(std::adjacent_find(welded.begin(), welded.end()), welded.end());
+}
+
 TEST(FoldRemoval, OverlappingSpheresAndAPiercingTriangle) {
     const TestMesh m = testing::overlapping_spheres();
     const Removed r = remove(m);

@@ -58,6 +58,18 @@ inline TestMesh boundary_fold() {
     return as_floats(m);
 }
 
+/// A bent patch with a fin: a face folded back onto a border face across its border edge, its
+/// third corner a copy of that face's (two faces on one place, as a pinched point's copies can
+/// leave them; STATUS gap 19).
+inline TestMesh fin_through_a_copy() {
+    TestMesh m = height_patch(4, [](double x, double) { return 0.2 * x * x; });
+    const Triangle border_face = m.triangles[8]; // (1, 0), (2, 0), (2, 1): first edge on y = 0
+    const auto copy = std::uint32_t(m.positions.size());
+    m.positions.push_back(m.positions[border_face[2]]);
+    m.triangles.push_back({border_face[1], border_face[0], copy});
+    return as_floats(m);
+}
+
 /// Two overlapping spheres (a circle of crossings) and a triangle piercing the first.
 inline TestMesh overlapping_spheres() {
     TestMesh m = uv_sphere(20, 40);

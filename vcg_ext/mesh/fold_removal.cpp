@@ -10,7 +10,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -132,6 +131,7 @@ public:
                 ++stats.holes_refilled;
             }
         close_small_cut_holes(stats);
+        close_small_holes_left(stats);
         put_back_the_rest();
         stats.vertices_removed += disc_vertices_;
         stats.vertices_reinserted = reinserted_;
@@ -301,6 +301,105 @@ private:
         }
     }
 
+    // D-38: a border loop of at most kMaxFilledLoop edges is a gap of about a spacing (D-28),
+    // whichever phase left it; D-28's fans cross the mesh where the faces around it fold over
+    // the gap. Such a loop is closed the way close_cut closes a cut face's hole: triangulated
+    // across, else a corner's fan filled with it, else a disc of fans near it; the vertices
+    // those take out must all go back at once (put_back), or the closing is undone: a gap is
+    // not worth a point.
+    void close_small_holes_left(FoldRemovalStats& stats) {
+        // Only border vertices start a loop: those of the given mesh, and the corners of faces
+        // added or cut (the quick tests first: most vertices are neither).
+        std::vector<std::uint8_t> tried(positions_.size(), 0), changed(positions_.size(), 0);
+        for (std::size_t f = 0; f < triangles_.size(); ++f)
+            if (!alive_[f] || f >= original_faces_)
+                for (std::uint32_t v : triangles_[f]) changed[v] = 1;
+        for (std::uint32_t v = 0; v < positions_.size(); ++v) {
+            if (tried[v] || (!changed[v] && !on_given_border(v)) || faces_of(v).empty()) continue;
+            const std::optional<Hole> hole = small_hole(v, false);
+            if (!hole) continue;
+            for (std::uint32_t c : hole->corners) tried[c] = 1;
+            // A lone triangle's outline: the fill would repeat the triangle.
+            if (hole->corners.size() == 3 &&
+                repeats_a_face({hole->corners[2], hole->corners[1], hole->corners[0]}))
+                continue;
+            const Undo undo = begin_undo();
+            if (close_small_hole(*hole) && put_back_taken_out(undo))
+                ++stats.small_holes_closed;
+            else
+                rewind(undo);
+            retired_log_.reset();
+            // Every vertex it took out is back: none counts as removed or put back.
+            disc_vertices_ = undo.disc_vertices;
+            reinserted_ = undo.reinserted;
+        }
+    }
+
+    // v has an edge v→w in a face of the given mesh that no face there holds as w→v.
+    bool on_given_border(std::uint32_t v) const {
+        for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e) {
+            const Triangle& t = triangles_[at_.corner[e] / 3];
+            const std::uint32_t w = t[(at_.corner[e] % 3 + 1) % 3];
+            bool back = false;
+            for (std::uint32_t g = at_.begin(v); g < at_.end(v) && !back; ++g)
+                back = triangles_[at_.corner[g] / 3][(at_.corner[g] % 3 + 2) % 3] == w;
+            if (!back) return true;
+        }
+        return false;
+    }
+
+    // Closes a short loop; a corner's fan filled with it may only shrink it (the fill joins the
+    // corner's neighbours on the loop), so what is left is tried again.
+    bool close_small_hole(Hole hole) {
+        for (std::size_t step = 0; step < kMaxFilledLoop; ++step) {
+            if (close_hole(hole)) return true;
+            if (close_around(hole.corners) == 0) return false;
+            std::optional<Hole> rest;
+            for (std::uint32_t c : hole.corners)
+                if (!rest && !faces_of(c).empty()) rest = small_hole(c, false);
+            if (!rest || rest->corners.size() >= hole.corners.size()) return !rest;
+            hole = *rest;
+        }
+        return false;
+    }
+
+    // Where an undo goes back to: the faces there were, the faces retired so far, and the
+    // counts of vertices taken out and put back.
+    struct Undo {
+        std::size_t faces, retired, disc_vertices, reinserted;
+    };
+    Undo begin_undo() {
+        retired_log_.emplace();
+        return {triangles_.size(), 0, disc_vertices_, reinserted_};
+    }
+
+    // Every vertex the faces retired since `undo` left without a face goes back over a face near
+    // it, or false.
+    bool put_back_taken_out(const Undo& undo) {
+        std::vector<std::uint32_t> out;
+        for (std::size_t i = undo.retired; i < retired_log_->size(); ++i)
+            for (std::uint32_t v : triangles_[(*retired_log_)[i]])
+                if (representative_[v] == v && faces_of(v).empty()) out.push_back(v);
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+        return std::all_of(out.begin(), out.end(), [&](std::uint32_t v) {
+            return !faces_of(v).empty() || put_back(v, false);
+        });
+    }
+
+    // The faces stand as they did at `undo`.
+    void rewind(const Undo& undo) {
+        for (std::size_t f = undo.faces; f < triangles_.size(); ++f) alive_[f] = 0;
+        for (std::size_t i = retired_log_->size(); i-- > undo.retired;) {
+            const std::uint32_t f = (*retired_log_)[i];
+            if (f >= undo.faces) continue;
+            alive_[f] = 1;
+            if (f + 1 < partner_start_.size())
+                for (std::uint32_t e = partner_start_[f]; e < partner_start_[f + 1]; ++e)
+                    if (alive_[partner_[e]]) ++live_pairs_[partner_[e]];
+        }
+    }
+
     // close_cut's fills for a hole with `corners` in fill order: a corner whose fan, open at the
     // hole, is triangulated again across it; else a disc of fans around a corner within
     // kClosingReach of the hole's longest side from its centre. Returns the vertices removed
@@ -338,16 +437,21 @@ private:
     // the order of the faces that would fill it), if it is short, runs along a cut face (an edge
     // whose other face in the given mesh has gone) and has no edge that was on the border of the
     // given mesh (fills make edges the given mesh did not have).
-    std::optional<Hole> small_cut_hole(std::uint32_t v) const {
+    std::optional<Hole> small_cut_hole(std::uint32_t v) const { return small_hole(v, true); }
+
+    // The short border loop that leaves v, as the hole a fill closes; with `cut_only`, only a
+    // loop as small_cut_hole() takes it.
+    std::optional<Hole> small_hole(std::uint32_t v, bool cut_only) const {
         std::vector<std::uint32_t> loop{v};
         bool along_a_cut = false;
         for (std::size_t step = 0; step <= kMaxFilledLoop; ++step) {
             const std::uint32_t a = loop.back();
             const std::optional<std::uint32_t> next = border_successor(a);
-            if (!next || (given_edge(a, *next) && !given_edge(*next, a))) return std::nullopt;
+            if (!next || (cut_only && given_edge(a, *next) && !given_edge(*next, a)))
+                return std::nullopt;
             along_a_cut = along_a_cut || given_edge(*next, a);
             if (*next == v) {
-                if (loop.size() < 3 || !along_a_cut) return std::nullopt;
+                if (loop.size() < 3 || (cut_only && !along_a_cut)) return std::nullopt;
                 Hole hole;
                 hole.closed = true;
                 hole.corners.assign(loop.rbegin(), loop.rend()); // the fill runs the other way
@@ -1006,6 +1110,7 @@ private:
     // A face leaves the mesh: the pairs it was in are gone.
     void retire(std::uint32_t f) {
         alive_[f] = 0;
+        if (retired_log_) retired_log_->push_back(f);
         if (f + 1 >= partner_start_.size()) return; // a new face is in no pair
         for (std::uint32_t e = partner_start_[f]; e < partner_start_[f + 1]; ++e)
             if (alive_[partner_[e]]) --live_pairs_[partner_[e]];
@@ -1042,6 +1147,7 @@ private:
     std::vector<Triangle> inner_cuts_;       ///< faces cut with no edge on the border
     std::vector<std::uint32_t> cut_corners_; ///< the corners of every face cut
     std::size_t disc_vertices_ = 0;          ///< vertices beyond one that close_cut's discs removed
+    std::optional<std::vector<std::uint32_t>> retired_log_; ///< while a D-38 closing may be undone
 };
 
 } // namespace

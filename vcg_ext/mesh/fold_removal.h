@@ -34,10 +34,13 @@ struct FoldRemoval {
 /// intersect nothing and every step removes a face of the pair, so no pair is left. Sequential, in
 /// a fixed order: the same on any number of threads. `triangles` (a consistently oriented manifold,
 /// one fan per vertex: only the corners of faces cut or added are split when pinched) is
-/// rewritten over the result's vertices: kept faces in their order, then the new ones. Last, the
-/// vertices taken out and those given without any face (D-37: points in no triangle) go into a
-/// standing face near them, or close a border corner next to them, where that fits; vertices
-/// still without a face are not in the result.
+/// rewritten over the result's vertices: kept faces in their order, then the new ones. Then
+/// border loops of at most 5 edges (D-28's gaps, left by any phase) are closed where a fill fits
+/// and every vertex it takes out goes back at once, else they stay as they were (D-38). Last,
+/// the vertices taken out and those given without any face (D-37: points in no triangle) go into
+/// a standing face near them, or close a border corner next to them, where that fits; vertices
+/// still without a face are not in the result. Two faces on the same three positions are a pair
+/// (a fin folded flat onto a face through a pinched copy).
 FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
                          std::vector<Triangle>& triangles, const Execution& exec);
 

@@ -16,16 +16,16 @@ namespace hrsr {
 /// (exactly: triangle_intersection.h). The pair test is that of CGAL's
 /// Polygon_mesh_processing::self_intersections: triangles sharing no vertex intersect if they
 /// touch anywhere; sharing one vertex, if they meet anywhere else; sharing an edge, if they are
-/// coplanar and overlap. Vertices at the same position count as one vertex here (CGAL goes by
-/// vertex, so two fans joined through copies of one point, as HRsR writes non-manifold points,
-/// are a pair for CGAL and not here; intersecting_pairs_by_index() is CGAL's view). Degenerate
-/// triangles (corners exactly on one line, a repeated vertex included; CGAL reports them as a
-/// pair with themselves) and pairs on the same three vertices (duplicate faces; CGAL counts one
-/// wound the other way, the only kind its Surface_mesh holds) are not tested:
-/// check_mesh() counts both, its degenerate count with a tolerance, so it includes every
-/// triangle left out here. Candidate pairs come from a uniform grid over the triangles'
-/// bounding boxes (triangle_grid.h), each pair tested once, cells in parallel. `triangles` must
-/// index `positions`, whose coordinates must be finite.
+/// coplanar and overlap; sharing all three, always (two faces on one place; CGAL's Surface_mesh
+/// holds such a pair only wound opposite ways). Vertices at the same position count as one vertex
+/// here (CGAL goes by vertex, so two fans joined through copies of one point, as HRsR writes
+/// non-manifold points, are a pair for CGAL and not here; intersecting_pairs_by_index() is CGAL's
+/// view). Degenerate triangles (corners exactly on one line, a repeated vertex included; CGAL
+/// reports them as a pair with themselves) are not tested: check_mesh() counts them, with a
+/// tolerance, so its degenerate count includes every triangle left out here; it also counts
+/// duplicate faces apart. Candidate pairs come from a uniform grid over the triangles' bounding
+/// boxes (triangle_grid.h), each pair tested once, cells in parallel. `triangles` must index
+/// `positions`, whose coordinates must be finite.
 std::vector<TrianglePair> self_intersecting_pairs(const std::vector<Vec3>& positions,
                                                   const std::vector<Triangle>& triangles,
                                                   const Execution& exec);

@@ -14,9 +14,11 @@ using Corners = std::array<Vec3, 3>;
 /// as CGAL's Polygon_mesh_processing::self_intersections decides (the rule self_intersections.h
 /// describes): sharing no vertex, if they touch at all; sharing one vertex, if they meet
 /// anywhere else; sharing an edge, if they are coplanar and overlap (their opposite corners on
-/// the same side of the edge); sharing all three vertices (a duplicate), never. Which corners
-/// are shared is decided by the ids `ia`, `ib`. Exact on the coordinates as given (finite
-/// doubles): every decision is the sign of an orientation determinant (exact_predicates.h).
+/// the same side of the edge); sharing all three vertices (a duplicate), always: two faces
+/// on one place cover each other (CGAL's Surface_mesh holds such a pair only wound opposite ways,
+/// and reports it). Which corners are shared is decided by the ids `ia`, `ib`. Exact on the
+/// coordinates as given (finite doubles): every decision is the sign of an orientation determinant
+/// (exact_predicates.h).
 bool mesh_triangles_intersect(const Corners& a, const Triangle& ia, const Corners& b,
                               const Triangle& ib);
 
