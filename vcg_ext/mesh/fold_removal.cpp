@@ -314,8 +314,9 @@ private:
         for (std::size_t f = 0; f < triangles_.size(); ++f)
             if (!alive_[f] || f >= original_faces_)
                 for (std::uint32_t v : triangles_[f]) changed[v] = 1;
+        const std::vector<std::int64_t> open_fan = given_fan_ends();
         for (std::uint32_t v = 0; v < positions_.size(); ++v) {
-            if (tried[v] || (!changed[v] && !on_given_border(v)) || faces_of(v).empty()) continue;
+            if (tried[v] || (!changed[v] && open_fan[v] == 0) || faces_of(v).empty()) continue;
             const std::optional<Hole> hole = small_hole(v, false);
             if (!hole) continue;
             for (std::uint32_t c : hole->corners) tried[c] = 1;
@@ -335,17 +336,18 @@ private:
         }
     }
 
-    // v has an edge v→w in a face of the given mesh that no face there holds as w→v.
-    bool on_given_border(std::uint32_t v) const {
-        for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e) {
-            const Triangle& t = triangles_[at_.corner[e] / 3];
-            const std::uint32_t w = t[(at_.corner[e] % 3 + 1) % 3];
-            bool back = false;
-            for (std::uint32_t g = at_.begin(v); g < at_.end(v) && !back; ++g)
-                back = triangles_[at_.corner[g] / 3][(at_.corner[g] % 3 + 2) % 3] == w;
-            if (!back) return true;
+    // Per vertex of the given mesh (one fan each): the sum of its faces' next corners minus the
+    // sum of their previous ones, i.e. the last spoke minus the first of an open fan and 0 for
+    // a closed one (each next corner is another face's previous). Nonzero: on the border. One
+    // pass over the faces in order, instead of a walk around every vertex.
+    std::vector<std::int64_t> given_fan_ends() const {
+        std::vector<std::int64_t> ends(positions_.size(), 0);
+        for (std::size_t f = 0; f < original_faces_; ++f) {
+            const Triangle& t = triangles_[f];
+            for (int k = 0; k < 3; ++k)
+                ends[t[k]] += std::int64_t(t[(k + 1) % 3]) - std::int64_t(t[(k + 2) % 3]);
         }
-        return false;
+        return ends;
     }
 
     // Closes a short loop; a corner's fan filled with it may only shrink it (the fill joins the
