@@ -10,10 +10,6 @@ namespace hrsr {
 
 namespace {
 
-bool border(const SFace* f, int z) {
-    return f->cFFp(z) == f;
-}
-
 class FlatFaces {
 public:
     FlatFaces(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles)
@@ -22,7 +18,7 @@ public:
     // Clears f if it can; false leaves it as it is.
     bool clear(SFace* f, FlatFaceStats& stats) {
         const int z = longest_edge(f);
-        if (!border(f, z)) {
+        if (!is_border(f, z)) {
             if (!flip_fits(f, z)) return false;
             mesh_.flip(f, z);
             ++stats.flipped;
@@ -71,7 +67,7 @@ private:
     // On the border (edge z): both other edges must be interior, so that each end of edge z
     // keeps a face, and m must be interior, so that its faces stay one fan once f is gone.
     bool removable(const SFace* f, int z) const {
-        if (border(f, (z + 1) % 3) || border(f, (z + 2) % 3)) return false;
+        if (is_border(f, (z + 1) % 3) || is_border(f, (z + 2) % 3)) return false;
         return !mesh_.star(mesh_.vertex_of(f, (z + 2) % 3)).boundary;
     }
 

@@ -16,10 +16,6 @@ int corner_of(const SFace* f, const SVertex* v) {
     return -1;
 }
 
-bool is_border(const SFace* f, int z) {
-    return f->cFFp(z) == f;
-}
-
 // Re-attaches FF across edge z of f and edge w of g (g null: border).
 void attach(SFace* f, int z, SFace* g, int w) {
     if (g == nullptr) {

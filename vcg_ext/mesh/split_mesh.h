@@ -22,6 +22,11 @@ class SFace
     : public vcg::Face<SUsedTypes, vcg::face::VertexRef, vcg::face::FFAdj, vcg::face::BitFlags> {};
 class SMesh : public vcg::tri::TriMesh<std::vector<SVertex>, std::vector<SFace>> {};
 
+/// Edge z of f is on the border: no face across it (vcglib's FF adjacency points back at f).
+inline bool is_border(const SFace* f, int z) {
+    return f->cFFp(z) == f;
+}
+
 /// The counter-clockwise neighbourhood of a vertex: neighbours q_0 … q_{d−1}; wedge k lies
 /// between q_k and q_{k+1} (cyclically) and is a face, or null for the boundary gap.
 struct Star {
