@@ -125,15 +125,14 @@ public:
         for (const TrianglePair& p : pairs_)
             if (alive_[p.first] && alive_[p.second]) resolve(p, stats);
         for (const Triangle& t : inner_cuts_)
-            if (close_cut(t)) {
+            if (const std::size_t removed = close_cut(t)) {
                 --stats.faces_cut;
-                ++stats.vertices_removed;
+                stats.vertices_removed += removed;
                 ++stats.holes_refilled;
             }
         close_small_cut_holes(stats);
         close_small_holes_left(stats);
         put_back_the_rest();
-        stats.vertices_removed += disc_vertices_;
         stats.vertices_reinserted = reinserted_;
         stats.points_placed = placed_;
         stats.vertices_removed -= reinserted_;
@@ -236,46 +235,13 @@ private:
     }
 
     // A face cut inside the mesh leaves a triangular hole. Once every pair is gone, what stood in
-    // the way of the fills may be gone too: a corner whose fan, open at the hole, can be
-    // triangulated again across it (the notch of an open hole) closes the hole.
-    bool close_cut(const Triangle& cut) {
+    // the way of the fills may be gone too: the hole is closed as close_around() closes one.
+    // Returns the vertices removed (0: still open).
+    std::size_t close_cut(const Triangle& cut) {
         // The hole is still there: no standing face holds the cut face's edges.
         for (int k = 0; k < 3; ++k)
-            if (has_directed_edge(cut[k], cut[(k + 1) % 3])) return false;
-        for (const bool facing : {true, false})
-            for (int k = 0; k < 3; ++k) {
-                const std::uint32_t v = cut[k], next = cut[(k + 1) % 3], last = cut[(k + 2) % 3];
-                std::vector<Triangle> fan;
-                for (std::uint32_t f : faces_of(v)) fan.push_back(triangles_[f]);
-                if (fan.empty()) continue; // v went with another fill
-                const std::optional<Hole> link = link_of(v, fan);
-                // v's link runs from the cut face's last corner round to its next one.
-                // Two corners: v's one face would just go, which closes nothing.
-                if (!link || link->closed || link->corners.size() < 3 ||
-                    link->corners.front() != last || link->corners.back() != next)
-                    continue;
-                if (refill(v, facing)) return true;
-            }
-        return close_cut_by_disc(cut);
-    }
-
-    // The same with a disc of fans around a corner (refill_region), where no fan alone fits. The
-    // disc stays near the hole (within kClosingReach of its longest edge from its centre): a
-    // hole is not worth points taken from further away.
-    bool close_cut_by_disc(const Triangle& cut) {
-        const Vec3 centre = (positions_[cut[0]] + positions_[cut[1]] + positions_[cut[2]]) / 3.0;
-        double longest = 0;
-        for (int k = 0; k < 3; ++k)
-            longest = std::max(longest, (positions_[cut[k]] - positions_[cut[(k + 1) % 3]]).Norm());
-        const Reach reach{centre, kClosingReach * longest};
-        for (int k = 0; k < 3; ++k) {
-            if (faces_of(cut[k]).empty()) continue;
-            if (const std::size_t removed = refill_region(cut[k], &reach)) {
-                disc_vertices_ += removed - 1;
-                return true;
-            }
-        }
-        return false;
+            if (has_directed_edge(cut[k], cut[(k + 1) % 3])) return 0;
+        return close_around({cut[0], cut[1], cut[2]});
     }
 
     // The holes that cuts left inside the mesh and close_cut did not close: several cuts next
@@ -331,7 +297,6 @@ private:
                 rewind(undo);
             retired_log_.reset();
             // Every vertex it took out is back: none counts as removed or put back.
-            disc_vertices_ = undo.disc_vertices;
             reinserted_ = undo.reinserted;
         }
     }
@@ -366,13 +331,13 @@ private:
     }
 
     // Where an undo goes back to: the faces there were, the faces retired so far, and the
-    // counts of vertices taken out and put back.
+    // count of vertices put back.
     struct Undo {
-        std::size_t faces, retired, disc_vertices, reinserted;
+        std::size_t faces, retired, reinserted;
     };
     Undo begin_undo() {
         retired_log_.emplace();
-        return {triangles_.size(), 0, disc_vertices_, reinserted_};
+        return {triangles_.size(), 0, reinserted_};
     }
 
     // Every vertex the faces retired since `undo` left without a face goes back over a face near
@@ -402,10 +367,11 @@ private:
         }
     }
 
-    // close_cut's fills for a hole with `corners` in fill order: a corner whose fan, open at the
-    // hole, is triangulated again across it; else a disc of fans around a corner within
-    // kClosingReach of the hole's longest side from its centre. Returns the vertices removed
-    // (0: the hole is still open).
+    // The fills that close a hole with `corners` in fill order (a cut face's, or a short loop's):
+    // a corner whose fan, open at the hole, is triangulated again across it (the notch of an
+    // open hole); else a disc of fans around a corner within kClosingReach of the hole's longest
+    // side from its centre (a hole is not worth points taken from further away). Returns the
+    // vertices removed (0: the hole is still open).
     std::size_t close_around(const std::vector<std::uint32_t>& corners) {
         const std::size_t m = corners.size();
         for (const bool facing : {true, false})
@@ -414,6 +380,7 @@ private:
                                     last = corners[(k + m - 1) % m];
                 std::vector<Triangle> fan;
                 for (std::uint32_t f : faces_of(v)) fan.push_back(triangles_[f]);
+                if (fan.empty()) continue; // v went with another fill
                 const std::optional<Hole> link = link_of(v, fan);
                 // Two corners: the fill would have no triangle, v's one face would just go.
                 if (link && !link->closed && link->corners.size() >= 3 &&
@@ -421,14 +388,14 @@ private:
                     refill(v, facing))
                     return 1;
             }
-        Vec3 centre(0, 0, 0);
+        Vec3 sum(0, 0, 0);
         double longest = 0;
         for (std::size_t k = 0; k < m; ++k) {
-            centre += positions_[corners[k]] / double(m);
+            sum += positions_[corners[k]];
             longest = std::max(longest,
                                (positions_[corners[k]] - positions_[corners[(k + 1) % m]]).Norm());
         }
-        const Reach reach{centre, kClosingReach * longest};
+        const Reach reach{sum / double(m), kClosingReach * longest};
         for (std::uint32_t v : corners)
             if (!faces_of(v).empty())
                 if (const std::size_t removed = refill_region(v, &reach)) return removed;
@@ -1148,7 +1115,6 @@ private:
     std::size_t placed_ = 0;                 ///< vertices without a face given, placed (D-37)
     std::vector<Triangle> inner_cuts_;       ///< faces cut with no edge on the border
     std::vector<std::uint32_t> cut_corners_; ///< the corners of every face cut
-    std::size_t disc_vertices_ = 0;          ///< vertices beyond one that close_cut's discs removed
     std::optional<std::vector<std::uint32_t>> retired_log_; ///< while a D-38 closing may be undone
 };
 
