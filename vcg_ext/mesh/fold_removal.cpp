@@ -291,7 +291,7 @@ private:
                 repeats_a_face({hole->corners[2], hole->corners[1], hole->corners[0]}))
                 continue;
             const Undo undo = begin_undo();
-            if (close_small_hole(*hole) && put_back_taken_out(undo))
+            if (close_small_hole(*hole) && put_back_taken_out())
                 ++stats.small_holes_closed;
             else
                 rewind(undo);
@@ -330,34 +330,33 @@ private:
         return false;
     }
 
-    // Where an undo goes back to: the faces there were, the faces retired so far, and the
-    // count of vertices put back.
+    // Where an undo goes back to (the faces retired since are in retired_log_): the faces there
+    // were, and the count of vertices put back.
     struct Undo {
-        std::size_t faces, retired, reinserted;
+        std::size_t faces, reinserted;
     };
     Undo begin_undo() {
         retired_log_.emplace();
-        return {triangles_.size(), 0, reinserted_};
+        return {triangles_.size(), reinserted_};
     }
 
-    // Every vertex the faces retired since `undo` left without a face goes back over a face near
-    // it, or false.
-    bool put_back_taken_out(const Undo& undo) {
+    // Every vertex the faces retired since begin_undo() left without a face goes back over a
+    // face near it, or false.
+    bool put_back_taken_out() {
         std::vector<std::uint32_t> out;
-        for (std::size_t i = undo.retired; i < retired_log_->size(); ++i)
-            for (std::uint32_t v : triangles_[(*retired_log_)[i]])
+        for (std::uint32_t f : *retired_log_)
+            for (std::uint32_t v : triangles_[f])
                 if (representative_[v] == v && faces_of(v).empty()) out.push_back(v);
         std::sort(out.begin(), out.end());
         out.erase(std::unique(out.begin(), out.end()), out.end());
-        return std::all_of(out.begin(), out.end(), [&](std::uint32_t v) {
-            return !faces_of(v).empty() || put_back(v, false);
-        });
+        return std::all_of(out.begin(), out.end(),
+                           [&](std::uint32_t v) { return put_back(v, false); });
     }
 
     // The faces stand as they did at `undo`.
     void rewind(const Undo& undo) {
         for (std::size_t f = undo.faces; f < triangles_.size(); ++f) alive_[f] = 0;
-        for (std::size_t i = retired_log_->size(); i-- > undo.retired;) {
+        for (std::size_t i = retired_log_->size(); i-- > 0;) {
             const std::uint32_t f = (*retired_log_)[i];
             if (f >= undo.faces) continue;
             alive_[f] = 1;
