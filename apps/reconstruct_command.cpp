@@ -103,6 +103,7 @@ nlohmann::json fold_repair_json(const ReconstructionReport& r) {
 nlohmann::json hrsr_json(const ReconstructionReport& r) {
     const ReexpansionStats& e = r.reexpansion;
     return {{"coarse_points", r.coarse_points},
+            {"coarse_small_holes_filled", r.coarse_small_holes_filled},
             {"records", e.records},
             {"records_replayed", e.replayed},
             {"records_failed",

@@ -282,6 +282,28 @@ void take_rsr_stats(const rsr::CloudMesh& m, ReconstructionReport& report) {
     rsr::add_timings(report.timings, m.timings);
 }
 
+// RsR's mesh of the coarse cloud, its non-manifold vertices split (§5.8), as the re-expansion
+// takes it.
+CoarseMesh coarse_mesh_of(const PreparedCloud& coarse, std::vector<Triangle> triangles,
+                          ReconstructionReport& report) {
+    CompactMesh<CoarseIndex> m = compact<CoarseIndex>(coarse.size(), std::move(triangles));
+    report.vertex_copies = m.copies;
+    CoarseMesh coarse_mesh;
+    for (CoarseIndex p : m.vertex_point) {
+        coarse_mesh.vertex_node.push_back(coarse.node[p]);
+        coarse_mesh.positions.push_back(coarse.positions[p.value()]);
+    }
+    coarse_mesh.triangles = std::move(m.triangles);
+    // D-39: a coarse piece closed but for loops of at most five edges is a closed surface whose
+    // coarse sampling left pinholes, which the re-expansion would widen into slits D-28 cannot
+    // close. Pieces with a longer border (open scans) keep their loops: D-30 and D-28 decide
+    // about those on the fine mesh.
+    report.coarse_small_holes_filled =
+        fill_small_holes(coarse_mesh.triangles, coarse_mesh.positions, {}, kMaxFilledLoop,
+                         SmallHoleScope::PiecesClosedButForThem);
+    return coarse_mesh;
+}
+
 // §7: the collapsed points, smoothed (tangent mode) and split into components like RsR's input.
 PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collapsed,
                        const PreprocessOptions& options, const Execution& exec,
@@ -429,14 +451,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     rsr::CloudMesh rsr_mesh = rsr::reconstruct_cloud(coarse, options.rsr, exec, observer);
     take_rsr_stats(rsr_mesh, report);
 
-    CompactMesh<CoarseIndex> m = compact<CoarseIndex>(coarse.size(), std::move(rsr_mesh.triangles));
-    report.vertex_copies = m.copies;
-    CoarseMesh coarse_mesh;
-    for (CoarseIndex p : m.vertex_point) {
-        coarse_mesh.vertex_node.push_back(coarse.node[p]);
-        coarse_mesh.positions.push_back(coarse.positions[p.value()]);
-    }
-    coarse_mesh.triangles = std::move(m.triangles);
+    CoarseMesh coarse_mesh = coarse_mesh_of(coarse, std::move(rsr_mesh.triangles), report);
     coarse = PreparedCloud();
     report.l_min = options.l_min_percent > 0
                        ? options.l_min_percent / 100.0 * report.preprocess.bbox_diagonal

@@ -57,6 +57,8 @@ struct ReconstructionReport {
 
     // HRsR only.
     std::size_t coarse_points = 0; ///< points left after collapsing (given to RsR)
+    /// D-39: loops of at most 5 edges closed on coarse pieces that have no longer border.
+    std::size_t coarse_small_holes_filled = 0;
     std::size_t merged_points =
         0; ///< input points represented by another point's vertex (l_min, failed splits)
     std::vector<std::uint32_t> dropped_small_coarse_component; ///< input indices

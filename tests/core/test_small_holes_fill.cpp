@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -115,6 +116,38 @@ TEST(FillSmallHoles, AFillThatWouldIntersectTheMeshIsNotMade) {
     t.push_back({first, first + 1, first + 2});
     EXPECT_EQ(fill_small_holes(t, v), 0u);
     EXPECT_EQ(measure_mesh(v.size(), t).boundary_edges, 5u + 3u);
+}
+
+// D-39: with SmallHoleScope::PiecesClosedButForThem a short loop is closed only on a piece whose
+// every border loop is short. Piece A (vertex 0's star removed) is closed but for a pentagon;
+// piece B (vertices 0 and 1 removed, and one triangle far from them) has a long loop as well, so
+// its triangle hole stays open, which the default scope closes.
+TEST(FillSmallHoles, TheScopeLeavesPiecesWithALongerBorderOpen) {
+    std::vector<Vec3> a_points, b_points;
+    std::vector<Triangle> a, b;
+    icosahedron(a_points, a);
+    icosahedron(b_points, b);
+    a = without_star(a, 0);
+    b = without_star(without_star(b, 0), 1);
+    const Triangle far_from_the_hole{3, 2, 6};
+    b.erase(std::find(b.begin(), b.end(), far_from_the_hole));
+    std::vector<Vec3> v = a_points;
+    std::vector<Triangle> t = a;
+    const auto shift = std::uint32_t(v.size());
+    for (const Vec3& p : b_points) v.push_back(p + Vec3(10, 0, 0));
+    for (const Triangle& f : b) t.push_back({f[0] + shift, f[1] + shift, f[2] + shift});
+    const std::size_t border = measure_mesh(v.size(), t).boundary_edges;
+
+    std::vector<Triangle> scoped = t;
+    EXPECT_EQ(
+        fill_small_holes(scoped, v, {}, kMaxFilledLoop, SmallHoleScope::PiecesClosedButForThem),
+        1u);
+    EXPECT_EQ(measure_mesh(v.size(), scoped).boundary_edges, border - 5);
+    for (std::size_t i = t.size(); i < scoped.size(); ++i)
+        for (std::uint32_t corner : scoped[i]) EXPECT_LT(corner, shift); // on piece A
+
+    EXPECT_EQ(fill_small_holes(t, v), 2u);
+    EXPECT_EQ(measure_mesh(v.size(), t).boundary_edges, border - 5 - 3);
 }
 
 } // namespace

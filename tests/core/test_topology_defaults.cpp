@@ -159,6 +159,10 @@ INSTANTIATE_TEST_SUITE_P(
             // D-38: at p = 1/4 its sparse end kept a 5-edge slit whose fans crossed the faces
             // folding over it (bench/topology.sh, session 17).
             Cloud{"TripleTorus_5k_Graded", Shape::TripleTorus, 5000, Density::Graded, 0, true},
+            // D-39: RsR on its coarse cloud at p = 1/4 left a 5-edge hole that the re-expansion
+            // widened to an 8-edge slit (bench/topology.sh, session 18).
+            Cloud{"TripleTorus_5k_Graded_Noise01_NoNormals", Shape::TripleTorus, 5000,
+                  Density::Graded, 0.1, false},
             Cloud{"TripleTorus_20k_Graded_Noise01", Shape::TripleTorus, 20000, Density::Graded, 0.1,
                   true}),
         ::testing::ValuesIn(kMethods)),

@@ -1,6 +1,7 @@
 #include "mesh/small_holes_fill.h"
 
 #include "geometry.h"
+#include "graph/neighbour_graph.h"
 #include "mesh/triangle_grid.h"
 
 #include <algorithm>
@@ -98,6 +99,49 @@ bool short_loop(const std::vector<std::uint32_t>& next, std::uint32_t v, std::si
     std::vector<std::uint32_t> sorted = loop;
     std::sort(sorted.begin(), sorted.end());
     return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end() && sorted.front() == v;
+}
+
+// Per vertex: its piece (the vertices its triangles join) is not a closed surface with pinholes:
+// it has a border that is not a short loop (a longer loop, or a vertex on several hole edges),
+// or at least as many border vertices as interior ones (a scrap of a few points).
+std::vector<std::uint8_t> on_open_piece(const std::vector<Triangle>& triangles,
+                                        const std::vector<std::uint32_t>& next,
+                                        std::size_t max_edges) {
+    const std::size_t n = next.size();
+    DisjointSets pieces(n);
+    std::vector<std::uint8_t> used(n, 0);
+    for (const Triangle& t : triangles) {
+        pieces.unite(t[0], t[1]);
+        pieces.unite(t[0], t[2]);
+        used[t[0]] = used[t[1]] = used[t[2]] = 1;
+    }
+    std::vector<std::uint8_t> open_root(n, 0);
+    std::vector<std::int64_t> interior_minus_border(n, 0);
+    std::vector<std::uint32_t> loop;
+    for (std::uint32_t v = 0; v < n; ++v) {
+        if (!used[v]) continue;
+        const std::uint32_t root = pieces.find(v);
+        interior_minus_border[root] += next[v] == kNone ? 1 : -1;
+        if (next[v] == kNone) continue;
+        // short_loop accepts a loop only from its smallest vertex: find that one first.
+        bool on_short = false;
+        if (next[v] != kMany) {
+            std::uint32_t smallest = v;
+            std::uint32_t x = next[v];
+            for (std::size_t steps = 0; x != v && x < kMany && steps < max_edges; ++steps) {
+                smallest = std::min(smallest, x);
+                x = next[x];
+            }
+            on_short = x == v && short_loop(next, smallest, max_edges, loop);
+        }
+        if (!on_short) open_root[root] = 1;
+    }
+    std::vector<std::uint8_t> open(n, 0);
+    for (std::uint32_t v = 0; v < n; ++v) {
+        const std::uint32_t root = pieces.find(v);
+        open[v] = open_root[root] || interior_minus_border[root] <= 0;
+    }
+    return open;
 }
 
 // The fans (triangulations) of the loop whose diagonals are not edges and whose smallest angle
@@ -240,7 +284,7 @@ void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangle
 
 std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
                              const IndexVector<VertexIndex, PointIndex>& vertex_point,
-                             std::size_t max_edges) {
+                             std::size_t max_edges, SmallHoleScope scope) {
     const VertexPositions positions{points, vertex_point,
                                     vertex_point.empty() ? points.size() : vertex_point.size()};
     std::vector<Fill> fills;
@@ -248,9 +292,12 @@ std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector
         const DirectedEdges edges(triangles, positions.vertex_count);
         const std::vector<std::uint32_t> next =
             hole_successors(triangles, edges, positions.vertex_count);
+        const std::vector<std::uint8_t> open = scope == SmallHoleScope::PiecesClosedButForThem
+                                                   ? on_open_piece(triangles, next, max_edges)
+                                                   : std::vector<std::uint8_t>(next.size(), 0);
         std::vector<std::uint32_t> loop;
         for (std::uint32_t v = 0; v < next.size(); ++v) {
-            if (next[v] == kNone || !short_loop(next, v, max_edges, loop)) continue;
+            if (next[v] == kNone || open[v] || !short_loop(next, v, max_edges, loop)) continue;
             if (loop.size() == 3 && edges.has_triangle(loop[0], loop[1], loop[2])) continue;
             Fill f;
             f.fans = candidate_fans(loop, edges, positions);

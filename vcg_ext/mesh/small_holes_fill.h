@@ -1,4 +1,5 @@
-// D-28: closing the tiniest holes of an output mesh, whatever phase left them.
+// D-28: closing the tiniest holes of an output mesh, whatever phase left them (and D-39: those
+// of HRsR's coarse mesh on pieces that are otherwise closed).
 #pragma once
 
 #include "index_types.h"
@@ -14,6 +15,12 @@ namespace hrsr {
 /// points is a gap of about one point spacing, not a hole in the data.
 inline constexpr std::size_t kMaxFilledLoop = 5;
 
+/// Which short loops fill_small_holes closes.
+enum class SmallHoleScope {
+    Every,                  ///< every short loop (D-28)
+    PiecesClosedButForThem, ///< only on pieces whose every border loop is short (D-39)
+};
+
 /// Closes every boundary loop of 3 … `max_edges` distinct vertices, each of which borders no
 /// other hole, by the best fan (one of the loop's triangulations; best = largest smallest angle,
 /// at least 1°) whose diagonals are not edges yet and whose triangles intersect neither the mesh
@@ -25,6 +32,7 @@ inline constexpr std::size_t kMaxFilledLoop = 5;
 /// vertex).
 std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
                              const IndexVector<VertexIndex, PointIndex>& vertex_point = {},
-                             std::size_t max_edges = kMaxFilledLoop);
+                             std::size_t max_edges = kMaxFilledLoop,
+                             SmallHoleScope scope = SmallHoleScope::Every);
 
 } // namespace hrsr
