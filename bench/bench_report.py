@@ -42,7 +42,11 @@ def genus_text(check):
     return ", ".join(str(g) for g in genus)
 
 
-def table(runs):
+def stamp(run, meta):
+    return run.get("measured", {"date": meta["date"], "commit": meta["commit"]})
+
+
+def table(runs, meta):
     head = ("| method | status | time (s) | peak RSS (MB) | V | F | r_v | boundary edges | loops "
             "| non-manifold e / v | components | genus (closed) | self-int. pairs "
             "| degenerate / duplicate | min angle < 10° | Chamfer | Hausdorff |")
@@ -56,7 +60,9 @@ def table(runs):
         if angle.get("faces"):
             below = 100.0 * angle["below_10"] / angle["faces"]
         rows.append("| " + " | ".join([
-            r["method_label"], r["status"], fmt(r["seconds"]), fmt(r["peak_rss_mb"], 0),
+            r["method_label"] + ("" if stamp(r, meta)["date"] == meta["date"]
+                                 else f" ({stamp(r, meta)['date']})"),
+            r["status"], fmt(r["seconds"]), fmt(r["peak_rss_mb"], 0),
             fmt(c.get("vertices")), fmt(c.get("faces")),
             "–" if rv is None else f"{100 * rv:.3f} %",
             fmt(c.get("boundary_edges")), fmt(c.get("boundary_loops")),
@@ -177,9 +183,15 @@ def section(results, plot_files, plot_link_dir):
            "(within 1e-6 of the diagonal); Chamfer and Hausdorff relative to the reference's "
            f"bounding-box diagonal ({meta['check_samples']:,} area samples per surface plus "
            f"the vertices). Runs over {meta['timeout_s']:.0f} s are stopped (\"timeout\").", ""]
+    earlier = sorted({(stamp(r, meta)["date"], stamp(r, meta)["commit"]) for r in runs
+                      if stamp(r, meta)["date"] != meta["date"]})
+    if earlier:
+        out += ["Rows whose method carries a date are from an earlier run kept by `--resume` ("
+                + "; ".join(f"{d} at commit `{c}`" for d, c in earlier)
+                + "); compare their times only with rows of the same date.", ""]
     for ds in dataset_names(runs):
         mine = ordered([r for r in runs if r["dataset"] == ds])
-        out += [f"### {mine[0]['label']}", "", table(mine), ""]
+        out += [f"### {mine[0]['label']}", "", table(mine, meta), ""]
     for name, caption in plot_files:
         out += [f"![{caption}]({plot_link_dir}/{name})", "", f"*{caption}.*", ""]
     out.append(END)

@@ -118,7 +118,12 @@ class Runner:
         self.results_path = self.out / "results.json"
         self.results = []
         if args.resume and self.results_path.exists():
-            self.results = json.loads(self.results_path.read_text())["runs"]
+            earlier = json.loads(self.results_path.read_text())
+            self.results = earlier["runs"]
+            # Runs from before per-run stamps carry the date and commit of the run they came from.
+            for r in self.results:
+                r.setdefault("measured", {"date": earlier["meta"]["date"],
+                                          "commit": earlier["meta"]["commit"]})
 
     # ------------------------------------------------------------------------------------------
     # Inputs
@@ -263,9 +268,11 @@ class Runner:
         datasets = self.datasets()
         # --resume: a run outside this call's data sets and methods stays as it was (failed and
         # timed-out ones too: they are results); inside them, only successful runs are kept.
+        # --again: inside them, every run is measured again.
         selected = {(ds.name, m) for ds in datasets for m in methods}
         done = {(r["dataset"], r["method"]) for r in self.results
-                if r["status"] == "ok" or (r["dataset"], r["method"]) not in selected}
+                if (r["dataset"], r["method"]) not in selected or
+                (r["status"] == "ok" and not self.args.again)}
         self.results = [r for r in self.results if (r["dataset"], r["method"]) in done]
         for ds in datasets:
             for method in methods:
@@ -275,6 +282,7 @@ class Runner:
                     print(f"  {ds.name:14} {method:16} skipped (not installed)", flush=True)
                     continue
                 r = self.run_one(ds, method)
+                r["measured"] = {"date": meta["date"], "commit": meta["commit"]}
                 self.results.append(r)
                 self.save(meta)
                 c = r.get("check", {})
@@ -344,6 +352,8 @@ def main():
     p.add_argument("--resume", action="store_true",
                    help="keep the runs of results.json: all of those outside --datasets/--methods, "
                         "the successful ones inside (the others run again)")
+    p.add_argument("--again", action="store_true",
+                   help="with --resume: measure the selected runs again, successful ones too")
     p.add_argument("--keep-meshes", action="store_true", help="keep every output mesh")
     return Runner(p.parse_args()).main()
 

@@ -5,7 +5,7 @@
 #   bench/compare.sh --quick    small inputs (owl 10k, kitten 5k, dragon samples 10k/20k) to test
 #                               the script; the report goes to the results folder only
 # Other options are passed to bench/compare.py (--methods, --datasets, --timeout S, --samples N,
-# --resume, --keep-meshes); --out DIR sets the results folder (default
+# --resume, --again, --keep-meshes); --out DIR sets the results folder (default
 # $HRSR_BUILD_DIR/bench-results/{full,quick}); --no-install skips the package check.
 #
 # 1. Installs the benchmark-only Debian packages if missing (apt-get, with sudo when not root):
