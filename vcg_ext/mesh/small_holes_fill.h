@@ -18,18 +18,19 @@ inline constexpr std::size_t kMaxFilledLoop = 5;
 /// Which short loops fill_small_holes closes.
 enum class SmallHoleScope {
     Every,                  ///< every short loop (D-28)
-    PiecesClosedButForThem, ///< only on pieces whose every border loop is short (D-39)
+    PiecesClosedButForThem, ///< only on pieces closed but for short loops (D-39)
 };
 
 /// Closes every boundary loop of 3 … `max_edges` distinct vertices, each of which borders no
-/// other hole, by the best fan (one of the loop's triangulations; best = largest smallest angle,
-/// at least 1°) whose diagonals are not edges yet and whose triangles intersect neither the mesh
-/// nor an earlier fill (the `hrsr check` test): a fill never adds a fold. New triangles follow
+/// other hole (with `scope` PiecesClosedButForThem: only on pieces, i.e. vertices joined by
+/// triangles, whose every border loop is such a loop and whose interior vertices outnumber their
+/// border vertices), by the best fan (one of the loop's triangulations; best = largest smallest
+/// angle, at least 1°) whose diagonals are not edges yet and whose triangles intersect neither the
+/// mesh nor an earlier fill (the `hrsr check` test): a fill never adds a fold. New triangles follow
 /// the loop's winding, so the mesh stays edge- and vertex-manifold and coherently oriented; a
 /// 3-loop that is already a triangle (a lone triangle's outline) stays open. Vertex v lies at
 /// points[vertex_point[v]], or at points[v] when vertex_point is empty. Returns the number of
-/// loops closed. Deterministic (loops in order of their smallest
-/// vertex).
+/// loops closed. Deterministic (loops in order of their smallest vertex).
 std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
                              const IndexVector<VertexIndex, PointIndex>& vertex_point = {},
                              std::size_t max_edges = kMaxFilledLoop,
