@@ -46,6 +46,12 @@ def stamp(run, meta):
     return run.get("measured", {"date": meta["date"], "commit": meta["commit"]})
 
 
+def method_cell(run, meta):
+    """The method's label, with the date of the run it came from when that is not this run's."""
+    date = stamp(run, meta)["date"]
+    return run["method_label"] + ("" if date == meta["date"] else f" ({date})")
+
+
 def table(runs, meta):
     head = ("| method | status | time (s) | peak RSS (MB) | V | F | r_v | boundary edges | loops "
             "| non-manifold e / v | components | genus (closed) | self-int. pairs "
@@ -60,9 +66,7 @@ def table(runs, meta):
         if angle.get("faces"):
             below = 100.0 * angle["below_10"] / angle["faces"]
         rows.append("| " + " | ".join([
-            r["method_label"] + ("" if stamp(r, meta)["date"] == meta["date"]
-                                 else f" ({stamp(r, meta)['date']})"),
-            r["status"], fmt(r["seconds"]), fmt(r["peak_rss_mb"], 0),
+            method_cell(r, meta), r["status"], fmt(r["seconds"]), fmt(r["peak_rss_mb"], 0),
             fmt(c.get("vertices")), fmt(c.get("faces")),
             "–" if rv is None else f"{100 * rv:.3f} %",
             fmt(c.get("boundary_edges")), fmt(c.get("boundary_loops")),

@@ -355,7 +355,10 @@ def main():
     p.add_argument("--again", action="store_true",
                    help="with --resume: measure the selected runs again, successful ones too")
     p.add_argument("--keep-meshes", action="store_true", help="keep every output mesh")
-    return Runner(p.parse_args()).main()
+    args = p.parse_args()
+    if args.again and not args.resume:
+        p.error("--again needs --resume (without it every run is measured anyway)")
+    return Runner(args).main()
 
 
 if __name__ == "__main__":

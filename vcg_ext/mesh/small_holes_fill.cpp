@@ -101,6 +101,19 @@ bool short_loop(const std::vector<std::uint32_t>& next, std::uint32_t v, std::si
     return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end() && sorted.front() == v;
 }
 
+// v's hole is a short loop: following next from v comes back to v within max_edges edges. (next
+// is a function, so such a walk is a simple loop, and it has at least 3 edges: a → b and b → a
+// cannot both be border edges.)
+bool on_short_loop(const std::vector<std::uint32_t>& next, std::uint32_t v, std::size_t max_edges) {
+    std::uint32_t x = v;
+    for (std::size_t edges = 0; edges < max_edges; ++edges) {
+        x = next[x];
+        if (x == kNone || x == kMany) return false;
+        if (x == v) return true;
+    }
+    return false;
+}
+
 // Per vertex: its piece (the vertices its triangles join) is not a closed surface with pinholes:
 // it has a border that is not a short loop (a longer loop, or a vertex on several hole edges),
 // or at least as many border vertices as interior ones (a scrap of a few points).
@@ -117,24 +130,11 @@ std::vector<std::uint8_t> on_open_piece(const std::vector<Triangle>& triangles,
     }
     std::vector<std::uint8_t> open_root(n, 0);
     std::vector<std::int64_t> interior_minus_border(n, 0);
-    std::vector<std::uint32_t> loop;
     for (std::uint32_t v = 0; v < n; ++v) {
         if (!used[v]) continue;
         const std::uint32_t root = pieces.find(v);
         interior_minus_border[root] += next[v] == kNone ? 1 : -1;
-        if (next[v] == kNone) continue;
-        // short_loop accepts a loop only from its smallest vertex: find that one first.
-        bool on_short = false;
-        if (next[v] != kMany) {
-            std::uint32_t smallest = v;
-            std::uint32_t x = next[v];
-            for (std::size_t steps = 0; x != v && x < kMany && steps < max_edges; ++steps) {
-                smallest = std::min(smallest, x);
-                x = next[x];
-            }
-            on_short = x == v && short_loop(next, smallest, max_edges, loop);
-        }
-        if (!on_short) open_root[root] = 1;
+        if (next[v] != kNone && !on_short_loop(next, v, max_edges)) open_root[root] = 1;
     }
     std::vector<std::uint8_t> open(n, 0);
     for (std::uint32_t v = 0; v < n; ++v) {
