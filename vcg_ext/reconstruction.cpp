@@ -6,6 +6,7 @@
 #include "hrsr/input_reach.h"
 #include "hrsr/unsampled_triangles.h"
 #include "index_types.h"
+#include "input_order.h"
 #include "mesh/fans.h"
 #include "mesh/flat_faces.h"
 #include "mesh/fold_removal.h"
@@ -381,12 +382,41 @@ void finish_border(ReexpandedMesh& fine, const std::vector<Vec3>& geometry, int 
     report.small_holes_filled = fill_small_holes(fine.triangles, geometry, fine.vertex_node);
 }
 
-} // namespace
+// A mesh of the cloud in spatial order and what measuring it needs.
+struct Unmeasured {
+    Reconstruction mesh;
+    Normalisation normalisation;
+};
 
-Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
-                               const Execution& exec, ReconstructionReport& report,
-                               rsr::Observer* observer) {
-    validate(options);
+// D-40: the input in spatial order, with the time it took to order.
+struct InSpatialOrder {
+    InSpatialOrder(const PointSet& input, const Execution& exec) {
+        begin_phase(exec, "spatial order");
+        const auto start = std::chrono::steady_clock::now();
+        order = spatial_order(input.positions, exec);
+        points = reordered(input, order);
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    SpatialOrder order;
+    PointSet points;
+    double seconds = 0;
+};
+
+// The mesh in input indices and order, measured, its closed components turned outwards (D-6),
+// every input point accounted for.
+Reconstruction finished(const PointSet& input, const InSpatialOrder& ordered, bool outward,
+                        Unmeasured out, ReconstructionReport& report) {
+    report.timings.insert(report.timings.begin(), {"spatial order", ordered.seconds});
+    restore_input_order(ordered.order, out.mesh, report);
+    measure_output(input, out.normalisation, outward, out.mesh, report);
+    account(input, out.mesh, report);
+    require_triangles(out.mesh, report);
+    return std::move(out.mesh);
+}
+
+// RsR's mesh of `input` (in spatial order), before it is measured.
+Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const Execution& exec,
+                       ReconstructionReport& report, rsr::Observer* observer) {
     const PreparedCloud cloud = preprocess(input, options.preprocess, exec, report.preprocess);
     report.points_used = cloud.size();
     report.timings = report.preprocess.timings;
@@ -403,20 +433,18 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     repair_and_remove_folds(input, cloud, options.fold_repair_rounds, exec, mesh, report);
     clear_flat_output_faces(input, mesh, report);
     restore_input_normals(input, report.preprocess, mesh);
-    measure_output(input, cloud.normalisation, options.orient_outward, mesh, report);
-    account(input, mesh, report);
-    require_triangles(mesh, report);
-    return mesh;
+    return {std::move(mesh), cloud.normalisation};
 }
 
-Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptions& options,
-                                const Execution& exec, ReconstructionReport& report,
-                                rsr::Observer* observer,
-                                ReexpansionObserver* reexpansion_observer) {
-    validate(options);
+// HRsR's mesh of `input` (in spatial order), before it is measured.
+// Its normals are released once prepared: only the positions are read later (peak memory).
+Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
+                        const Execution& exec, ReconstructionReport& report,
+                        rsr::Observer* observer, ReexpansionObserver* reexpansion_observer) {
     const PreprocessOptions& pre = options.rsr.preprocess;
     const PreparedCloud cloud =
         prepare_points(input, pre, exec, report.preprocess, nullptr, PrepareFor::Collapse);
+    std::vector<Vec3>().swap(input.normals);
     report.points_used = cloud.size();
     report.timings = report.preprocess.timings;
     // D-33: in a noisy cloud every decision of HRsR (collapse, re-expansion, D-30, D-31, D-28)
@@ -485,10 +513,29 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     assembly.reset();
     repair_and_remove_folds(input, cloud, options.rsr.fold_repair_rounds, exec, mesh, report);
     clear_flat_output_faces(input, mesh, report);
-    measure_output(input, cloud.normalisation, options.rsr.orient_outward, mesh, report);
-    account(input, mesh, report);
-    require_triangles(mesh, report);
-    return mesh;
+    return {std::move(mesh), cloud.normalisation};
+}
+
+} // namespace
+
+Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
+                               const Execution& exec, ReconstructionReport& report,
+                               rsr::Observer* observer) {
+    validate(options);
+    const InSpatialOrder ordered(input, exec);
+    Unmeasured out = rsr_mesh_of(ordered.points, options, exec, report, observer);
+    return finished(input, ordered, options.orient_outward, std::move(out), report);
+}
+
+Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptions& options,
+                                const Execution& exec, ReconstructionReport& report,
+                                rsr::Observer* observer,
+                                ReexpansionObserver* reexpansion_observer) {
+    validate(options);
+    InSpatialOrder ordered(input, exec);
+    Unmeasured out =
+        hrsr_mesh_of(ordered.points, options, exec, report, observer, reexpansion_observer);
+    return finished(input, ordered, options.rsr.orient_outward, std::move(out), report);
 }
 
 Reconstruction reconstruct(const PointSet& input, const ReconstructionOptions& options,

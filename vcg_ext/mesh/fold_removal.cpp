@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -349,8 +350,7 @@ private:
                 if (representative_[v] == v && faces_of(v).empty()) out.push_back(v);
         std::sort(out.begin(), out.end());
         out.erase(std::unique(out.begin(), out.end()), out.end());
-        return std::all_of(out.begin(), out.end(),
-                           [&](std::uint32_t v) { return put_back(v, false); });
+        return std::all_of(out.begin(), out.end(), [&](std::uint32_t v) { return put_back(v); });
     }
 
     // The faces stand as they did at `undo`.
@@ -689,9 +689,9 @@ private:
         for (std::uint32_t v = 0; v + 1 < at_.start.size(); ++v) {
             if (representative_[v] != v) continue;
             if (lost_all_faces(v)) {
-                reinserted_ += put_back(v, false);
+                reinserted_ += put_back(v);
             } else if (never_had_a_face(v)) {
-                placed_ += put_back(v, true);
+                placed_ += put_back(v);
             }
         }
     }
@@ -713,6 +713,7 @@ private:
         std::vector<std::uint32_t> faces;  ///< replaced (none for a triangle beyond the border)
         std::vector<Triangle> triangles;   ///< instead
         std::vector<std::uint32_t> source; ///< per triangle: the face it lies over (or beside)
+        bool lengthens_border = false;     ///< D-41: v joins a border edge
     };
 
     // v's old fan's mean edge: how far from v a face may be to take it back (a vertex that had
@@ -756,6 +757,12 @@ private:
                 const std::optional<std::uint32_t> g = across(f, k);
                 const std::uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
                 if (!g) {
+                    // D-41: beyond (or on) the border edge a → b, one triangle across it or f
+                    // split in two there; the border then runs a → v → b.
+                    const Triangle ear{b, a, v};
+                    if (angle(ear) >= kMinBorderPutBackAngle)
+                        splits.push_back({{}, {ear}, {f}, true});
+                    splits.push_back({{f}, {{a, v, c}, {v, b, c}}, {f, f}, true});
                     add_corner_fill(f, k, v, splits);
                     continue;
                 }
@@ -805,19 +812,21 @@ private:
                kMaxPutBackHeight * longest * n.Norm();
     }
 
-    // `own_facing`: the face must also face v's own normal (a point that never had a fan may
-    // belong to the other side of a sheet; the sum of the corners' normals would not tell).
-    bool put_back(std::uint32_t v, bool own_facing) {
+    // D-41: every face v goes over must face v's own normal, not only the sum of the new
+    // triangles' corners' normals: two sheets closer than a spacing with opposed normals would
+    // otherwise trade points (a point of one went into a face of the other).
+    bool put_back(std::uint32_t v) {
         std::vector<Split> splits = splits_near(v);
-        std::vector<std::pair<double, std::size_t>> candidates; // (−smallest angle, split)
-        Box reach{positions_[v], positions_[v]};                // of every candidate's triangles
+        // (lengthens the border, −smallest angle, split): a longer border only where nothing else
+        // fits
+        std::vector<std::tuple<bool, double, std::size_t>> candidates;
+        Box reach{positions_[v], positions_[v]}; // of every candidate's triangles
         for (std::size_t i = 0; i < splits.size(); ++i) {
             const Split& split = splits[i];
             double smallest = 4;
             bool proper_split =
                 std::all_of(split.source.begin(), split.source.end(), [&](std::uint32_t f) {
-                    return low_over(v, f) &&
-                           (!own_facing || normal_of(triangles_[f]).dot(normals_[v]) > 0);
+                    return low_over(v, f) && normal_of(triangles_[f]).dot(normals_[v]) > 0;
                 });
             for (std::size_t k = 0; k < split.triangles.size() && proper_split; ++k) {
                 const Triangle& t = split.triangles[k];
@@ -826,14 +835,14 @@ private:
                 smallest = std::min(smallest, angle(t));
             }
             if (!proper_split) continue;
-            candidates.emplace_back(-smallest, i);
+            candidates.emplace_back(split.lengthens_border, -smallest, i);
             for (const Triangle& t : split.triangles)
                 for (std::uint32_t w : t) reach.add(positions_[w]);
         }
         if (candidates.empty()) return false;
         std::sort(candidates.begin(), candidates.end());
         gather_standing(reach); // one search for all candidates
-        for (const auto& [negative_angle, i] : candidates) {
+        for (const auto& [lengthens, negative_angle, i] : candidates) {
             const Split& split = splits[i];
             for (std::uint32_t f : split.faces) alive_[f] = 0;
             bool fits = true;

@@ -1,0 +1,125 @@
+// D-40: the cloud in Morton order inside reconstruct(), the result in input indices.
+#include "reconstruction.h"
+#include "samplers.h"
+#include "spatial_order.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <set>
+
+namespace hrsr {
+namespace {
+
+TEST(SpatialOrder, CornersOfACubeComeInZOrder) {
+    // The eight corners given in reverse Z order: x is the lowest bit, then y, then z.
+    std::vector<Vec3> corners;
+    for (int k = 7; k >= 0; --k) corners.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+    const SpatialOrder order = spatial_order(corners, Execution{});
+    EXPECT_EQ(order.input_index, (std::vector<std::uint32_t>{7, 6, 5, 4, 3, 2, 1, 0}));
+}
+
+TEST(SpatialOrder, DuplicatesKeepInputOrderAndNonFinitePointsComeLast) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<Vec3> points{{1, 1, 1}, {nan, 0, 0},
+                                   {0, 0, 0}, {1, 1, 1},
+                                   {0, 0, 0}, {0, std::numeric_limits<double>::infinity(), 0}};
+    const SpatialOrder order = spatial_order(points, Execution{});
+    EXPECT_EQ(order.input_index, (std::vector<std::uint32_t>{2, 4, 0, 3, 1, 5}));
+}
+
+TEST(SpatialOrder, NeighboursInTheOrderAreNearInSpace) {
+    // Sphere samples come in random order: consecutive points are a radius apart on average.
+    const PointSet s = testing::sample_sphere(20000);
+    const auto mean_step = [&](const std::vector<std::uint32_t>& order) {
+        double sum = 0;
+        for (std::size_t i = 1; i < order.size(); ++i)
+            sum += (s.positions[order[i]] - s.positions[order[i - 1]]).Norm();
+        return sum / double(order.size() - 1);
+    };
+    std::vector<std::uint32_t> input(s.size());
+    std::iota(input.begin(), input.end(), 0u);
+    const SpatialOrder order = spatial_order(s.positions, Execution{});
+    std::vector<std::uint32_t> sorted = order.input_index;
+    std::sort(sorted.begin(), sorted.end());
+    ASSERT_EQ(sorted, input); // a permutation
+    const double spacing = std::sqrt(4 * M_PI / double(s.size()));
+    EXPECT_GT(mean_step(input), 50 * spacing);
+    EXPECT_LT(mean_step(order.input_index), 4 * spacing);
+}
+
+TEST(SpatialOrder, ReorderedCloudKeepsPointsWithTheirNormals) {
+    PointSet s = testing::sample_sphere(100);
+    const SpatialOrder order = spatial_order(s.positions, Execution{});
+    const PointSet r = reordered(s, order);
+    ASSERT_EQ(r.size(), s.size());
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        EXPECT_EQ(r.positions[i], s.positions[order.input_index[i]]);
+        EXPECT_EQ(r.normals[i], s.normals[order.input_index[i]]);
+    }
+    s.normals.pop_back(); // a file that lies: sanitising must see the same mismatch
+    EXPECT_EQ(reordered(s, order).normals.size(), s.size() - 1);
+}
+
+// The triangles as input-point triples, each from its smallest corner (winding kept).
+std::set<std::array<std::uint32_t, 3>> triangles_over_points(const Reconstruction& m,
+                                                             const std::vector<std::uint32_t>& to) {
+    std::set<std::array<std::uint32_t, 3>> out;
+    for (const Triangle& t : m.triangles) {
+        std::array<std::uint32_t, 3> p{to[m.vertex_input_index[t[0]]],
+                                       to[m.vertex_input_index[t[1]]],
+                                       to[m.vertex_input_index[t[2]]]};
+        std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
+        out.insert(p);
+    }
+    return out;
+}
+
+class InputOrder : public ::testing::TestWithParam<Method> {};
+
+// Shuffling the input changes nothing but the numbers: the same triangles over the same points,
+// vertices in input order, the same points dropped.
+TEST_P(InputOrder, ShuffledInputGivesTheSameMeshOverTheSamePoints) {
+    PointSet s = testing::sample_torus(6000, 1.0, 0.35, testing::Density::Graded);
+    testing::add_noise(s, 0.002);
+    std::vector<std::uint32_t> shuffle(s.size()); // shuffled point -> original point
+    std::iota(shuffle.begin(), shuffle.end(), 0u);
+    std::shuffle(shuffle.begin(), shuffle.end(), std::mt19937(7));
+    PointSet t = s;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        t.positions[i] = s.positions[shuffle[i]];
+        t.normals[i] = s.normals[shuffle[i]];
+    }
+    ReconstructionOptions options;
+    options.method = GetParam();
+    ReconstructionReport a_report, b_report;
+    const Reconstruction a = reconstruct(s, options, Execution{}, a_report);
+    const Reconstruction b = reconstruct(t, options, Execution{}, b_report);
+    std::vector<std::uint32_t> identity(s.size());
+    std::iota(identity.begin(), identity.end(), 0u);
+    EXPECT_EQ(triangles_over_points(a, identity), triangles_over_points(b, shuffle));
+    EXPECT_TRUE(std::is_sorted(a.vertex_input_index.begin(), a.vertex_input_index.end()));
+    EXPECT_TRUE(std::is_sorted(b.vertex_input_index.begin(), b.vertex_input_index.end()));
+    const auto original = [&](std::vector<std::uint32_t> v) {
+        for (std::uint32_t& i : v) i = shuffle[i];
+        std::sort(v.begin(), v.end());
+        return v;
+    };
+    EXPECT_EQ(a_report.not_in_triangle, original(b_report.not_in_triangle));
+    EXPECT_EQ(a_report.dropped_fold, original(b_report.dropped_fold));
+    EXPECT_EQ(a_report.mesh.boundary_edges, b_report.mesh.boundary_edges);
+    EXPECT_EQ(a_report.vertex_reference_ratio, b_report.vertex_reference_ratio);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, InputOrder, ::testing::Values(Method::Rsr, Method::Hrsr),
+                         [](const auto& param_info) {
+                             return std::string(param_info.param == Method::Rsr ? "Rsr" : "Hrsr");
+                         });
+
+} // namespace
+} // namespace hrsr

@@ -1,0 +1,31 @@
+// The points along a space-filling curve (D-40, issue 20 item 1): a cloud comes in the order
+// its source wrote it (surface samples in random order, scans line by line), and every phase
+// walks its points, neighbours and faces by index. In Morton order neighbours are near in
+// memory too. Internal: reconstruct() runs on the reordered cloud and hands back a result in
+// input indices (input_order.h).
+#pragma once
+
+#include "parallel.h"
+#include "point_set.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace hrsr {
+
+/// A permutation of a cloud's points along the curve.
+struct SpatialOrder {
+    std::vector<std::uint32_t> input_index; ///< per point in the new order: its input index
+};
+
+/// Morton (Z) order of the finite positions, quantised to 2^21 cells along the longest side of
+/// their bounding box; points in one cell (exact duplicates among them) keep their input order,
+/// and non-finite positions come last, in input order.
+SpatialOrder spatial_order(const std::vector<Vec3>& positions, const Execution& exec);
+
+/// The points the algorithm reads (positions, and normals when the input has one per point),
+/// in `order`; attributes and warnings stay with the input, whose indices the result speaks of.
+/// Normals whose count does not match the points are copied as given, for sanitising to judge.
+PointSet reordered(const PointSet& input, const SpatialOrder& order);
+
+} // namespace hrsr
