@@ -15,10 +15,11 @@ SIZES=200000,800000,3200000,10000000
 THREADS=1,2
 HRSR=
 OUT=$ROOT/build/scaling
+WITH_20M=0
 while [ $# -gt 0 ]; do
   case $1 in
     --sizes) SIZES=$2; shift 2 ;;
-    --with-20m) SIZES=$SIZES,20000000; shift ;;
+    --with-20m) WITH_20M=1; shift ;;
     --threads) THREADS=$2; shift 2 ;;
     --hrsr) HRSR=$2; shift 2 ;;
     --out) OUT=$2; shift 2 ;;
@@ -27,6 +28,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 HRSR=${HRSR:-$BUILD/apps/hrsr}
+[ "$WITH_20M" = 1 ] && SIZES=$SIZES,20000000
 MESH=$ROOT/../shared/data/meshes/dragon_vrip.ply
 [ -f "$MESH" ] || { echo "scaling.sh: needs $MESH (../shared/data)" >&2; exit 1; }
 [ -x "$HRSR" ] || { echo "scaling.sh: no hrsr binary at $HRSR (build first)" >&2; exit 1; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace hrsr {
@@ -11,6 +12,8 @@ namespace {
 
 constexpr int kBitsPerAxis = 21; // 3 × 21 = 63 bits: one key a point
 constexpr std::uint64_t kNonFinite = std::numeric_limits<std::uint64_t>::max(); // after all
+constexpr double kOutlierFraction = 0.001; // order statistics of the central extent, each side
+constexpr double kOutlierMargin = 0.5;     // of the central extent, beyond which points are clamped
 
 // The low 21 bits of x, two zero bits after each (x's bit k goes to bit 3k).
 std::uint64_t spread(std::uint64_t x) {
@@ -46,18 +49,58 @@ void sort_by_key(std::vector<Keyed>& items) {
     }
 }
 
+// The box the curve spans: the finite points' bounding box, cut down on an axis where points lie
+// more than half the central extent (the 0.1 % to 99.9 % order statistics) beyond it. A few far
+// outliers, clamped into the outermost cells, then do not coarsen the cells of everything else.
+void central_box(const std::vector<Vec3>& positions, Vec3& lo, Vec3& hi) {
+    std::vector<double> values;
+    values.reserve(positions.size());
+    for (int k = 0; k < 3; ++k) {
+        values.clear();
+        for (const Vec3& p : positions)
+            if (finite(p)) values.push_back(p[k]);
+        if (values.empty()) {
+            lo[k] = hi[k] = 0;
+            continue;
+        }
+        const auto [min, max] = std::minmax_element(values.begin(), values.end());
+        lo[k] = *min;
+        hi[k] = *max;
+        const auto last = double(values.size() - 1);
+        const auto low = values.begin() + std::ptrdiff_t(std::floor(kOutlierFraction * last));
+        const auto high = values.begin() + std::ptrdiff_t(std::ceil((1 - kOutlierFraction) * last));
+        std::nth_element(values.begin(), low, values.end());
+        const double central_lo = *low;
+        std::nth_element(values.begin(), high, values.end());
+        const double central_hi = *high, margin = kOutlierMargin * (central_hi - central_lo);
+        lo[k] = std::max(lo[k], central_lo - margin);
+        hi[k] = std::min(hi[k], central_hi + margin);
+    }
+}
+
+// Points that share a cell (the key) follow their exact coordinates, then the input order (only
+// exact duplicates tie there): no order of the file survives but that of identical points.
+void order_within_cells(const std::vector<Vec3>& positions, std::vector<Keyed>& items) {
+    const auto by_position = [&](const Keyed& a, const Keyed& b) {
+        const Vec3 &p = positions[a.index], &q = positions[b.index];
+        for (int k = 0; k < 3; ++k)
+            if (p[k] != q[k]) return p[k] < q[k];
+        return a.index < b.index;
+    };
+    for (std::size_t begin = 0, end = 0; begin < items.size(); begin = end) {
+        end = begin + 1;
+        while (end < items.size() && items[end].key == items[begin].key) ++end;
+        if (end - begin > 1 && items[begin].key != kNonFinite) // NaN has no order: input order
+            std::sort(items.begin() + std::ptrdiff_t(begin), items.begin() + std::ptrdiff_t(end),
+                      by_position);
+    }
+}
+
 } // namespace
 
 SpatialOrder spatial_order(const std::vector<Vec3>& positions, const Execution& exec) {
-    Vec3 lo(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-            std::numeric_limits<double>::infinity());
-    Vec3 hi = -lo;
-    for (const Vec3& p : positions)
-        if (finite(p))
-            for (int k = 0; k < 3; ++k) {
-                lo[k] = std::min(lo[k], p[k]);
-                hi[k] = std::max(hi[k], p[k]);
-            }
+    Vec3 lo, hi;
+    central_box(positions, lo, hi);
     const double side = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 0.0});
     const double cells = double((std::uint64_t(1) << kBitsPerAxis) - 1);
     const double scale = side > 0 && std::isfinite(side) ? cells / side : 0.0;
@@ -75,6 +118,7 @@ SpatialOrder spatial_order(const std::vector<Vec3>& positions, const Execution& 
         items[i] = {key, std::uint32_t(i)};
     });
     sort_by_key(items);
+    order_within_cells(positions, items);
     SpatialOrder order;
     order.input_index.reserve(items.size());
     for (const Keyed& k : items) order.input_index.push_back(k.index);

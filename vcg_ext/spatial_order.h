@@ -18,9 +18,11 @@ struct SpatialOrder {
     std::vector<std::uint32_t> input_index; ///< per point in the new order: its input index
 };
 
-/// Morton (Z) order of the finite positions, quantised to 2^21 cells along the longest side of
-/// their bounding box; points in one cell (exact duplicates among them) keep their input order,
-/// and non-finite positions come last, in input order.
+/// Morton (Z) order of the finite positions, quantised to 21 bits an axis over the longest side
+/// of their bounding box, cut down where a few far outliers lie beyond half the central extent
+/// (0.1 % to 99.9 % of the coordinates) on an axis: those are clamped into the outermost cells.
+/// Points in one cell follow their exact coordinates, so only exact duplicates keep their input
+/// order; non-finite positions come last, in input order.
 SpatialOrder spatial_order(const std::vector<Vec3>& positions, const Execution& exec);
 
 /// The points the algorithm reads (positions, and normals when the input has one per point),

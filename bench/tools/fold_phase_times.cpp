@@ -1,8 +1,9 @@
 // The cost of the fold phases (issue 16 item 4) without the noise of a whole run: reconstructs a
 // cloud once with the fold repair off, then times the search for intersecting pairs (one
 // thread), D-26's flips and D-32's removal on that mesh REPEATS times, and prints the median of
-// each beside the median of a whole default run at one thread (which includes them). Not part
-// of the hrsr CLI.
+// each beside the median of a whole default run at one thread (which includes them). The mesh
+// timed alone is numbered as reconstruct() returns it (input order), not in the spatial order
+// the run's own fold phases see (D-40). Not part of the hrsr CLI.
 //   fold_phase_times CLOUD [REPEATS=5] [hrsr|rsr]
 // Exit codes: 0 success, 1 bad input, 2 usage.
 #include "io/point_set_reader.h"

@@ -33,15 +33,24 @@ TEST(SpatialOrder, DuplicatesKeepInputOrderAndNonFinitePointsComeLast) {
     EXPECT_EQ(order.input_index, (std::vector<std::uint32_t>{2, 4, 0, 3, 1, 5}));
 }
 
+// The mean distance between consecutive points of `order` (those of the first `count` points).
+double mean_step(const PointSet& s, const std::vector<std::uint32_t>& order, std::size_t count) {
+    double sum = 0;
+    std::size_t steps = 0, previous = order.size();
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        if (order[i] >= count) continue;
+        if (previous < order.size()) {
+            sum += (s.positions[order[i]] - s.positions[order[previous]]).Norm();
+            ++steps;
+        }
+        previous = i;
+    }
+    return sum / double(steps);
+}
+
 TEST(SpatialOrder, NeighboursInTheOrderAreNearInSpace) {
     // Sphere samples come in random order: consecutive points are a radius apart on average.
     const PointSet s = testing::sample_sphere(20000);
-    const auto mean_step = [&](const std::vector<std::uint32_t>& order) {
-        double sum = 0;
-        for (std::size_t i = 1; i < order.size(); ++i)
-            sum += (s.positions[order[i]] - s.positions[order[i - 1]]).Norm();
-        return sum / double(order.size() - 1);
-    };
     std::vector<std::uint32_t> input(s.size());
     std::iota(input.begin(), input.end(), 0u);
     const SpatialOrder order = spatial_order(s.positions, Execution{});
@@ -49,8 +58,26 @@ TEST(SpatialOrder, NeighboursInTheOrderAreNearInSpace) {
     std::sort(sorted.begin(), sorted.end());
     ASSERT_EQ(sorted, input); // a permutation
     const double spacing = std::sqrt(4 * M_PI / double(s.size()));
-    EXPECT_GT(mean_step(input), 50 * spacing);
-    EXPECT_LT(mean_step(order.input_index), 4 * spacing);
+    EXPECT_GT(mean_step(s, input, s.size()), 50 * spacing);
+    EXPECT_LT(mean_step(s, order.input_index, s.size()), 4 * spacing);
+}
+
+// A far outlier is clamped into the outermost cells instead of stretching the grid (a cell would
+// be a quarter of the sphere): the sphere's points stay in spatial order.
+TEST(SpatialOrder, AFarOutlierDoesNotCoarsenTheCells) {
+    PointSet s = testing::sample_sphere(20000);
+    s.positions.emplace_back(1e6, -1e6, 1e6);
+    const SpatialOrder order = spatial_order(s.positions, Execution{});
+    EXPECT_LT(mean_step(s, order.input_index, 20000), 4 * std::sqrt(4 * M_PI / 20000.0));
+}
+
+// Distinct points in one cell (a near-duplicate pair) come in the order of their coordinates,
+// whatever their order in the input.
+TEST(SpatialOrder, PointsInOneCellFollowTheirCoordinates) {
+    const Vec3 a(0.5, 0.5, 0.5), b(0.5 + 1e-12, 0.5, 0.5);
+    const std::vector<Vec3> ab{{0, 0, 0}, a, b, {1, 1, 1}}, ba{{0, 0, 0}, b, a, {1, 1, 1}};
+    EXPECT_EQ(spatial_order(ab, Execution{}).input_index, (std::vector<std::uint32_t>{0, 1, 2, 3}));
+    EXPECT_EQ(spatial_order(ba, Execution{}).input_index, (std::vector<std::uint32_t>{0, 2, 1, 3}));
 }
 
 TEST(SpatialOrder, ReorderedCloudKeepsPointsWithTheirNormals) {
@@ -80,6 +107,19 @@ std::set<std::array<std::uint32_t, 3>> triangles_over_points(const Reconstructio
     return out;
 }
 
+// Vertices in input order: each point's first vertex by input index, then the copies (§5.8).
+bool in_input_order(const std::vector<std::uint32_t>& vertex_input_index) {
+    std::set<std::uint32_t> seen;
+    std::size_t firsts = 0;
+    while (firsts < vertex_input_index.size() && seen.insert(vertex_input_index[firsts]).second)
+        ++firsts;
+    const auto copies = vertex_input_index.begin() + std::ptrdiff_t(firsts);
+    return std::is_sorted(vertex_input_index.begin(), copies) &&
+           std::is_sorted(copies, vertex_input_index.end()) &&
+           std::all_of(copies, vertex_input_index.end(),
+                       [&](std::uint32_t i) { return seen.count(i) == 1; });
+}
+
 class InputOrder : public ::testing::TestWithParam<Method> {};
 
 // Shuffling the input changes nothing but the numbers: the same triangles over the same points,
@@ -103,8 +143,8 @@ TEST_P(InputOrder, ShuffledInputGivesTheSameMeshOverTheSamePoints) {
     std::vector<std::uint32_t> identity(s.size());
     std::iota(identity.begin(), identity.end(), 0u);
     EXPECT_EQ(triangles_over_points(a, identity), triangles_over_points(b, shuffle));
-    EXPECT_TRUE(std::is_sorted(a.vertex_input_index.begin(), a.vertex_input_index.end()));
-    EXPECT_TRUE(std::is_sorted(b.vertex_input_index.begin(), b.vertex_input_index.end()));
+    EXPECT_TRUE(in_input_order(a.vertex_input_index));
+    EXPECT_TRUE(in_input_order(b.vertex_input_index));
     const auto original = [&](std::vector<std::uint32_t> v) {
         for (std::uint32_t& i : v) i = shuffle[i];
         std::sort(v.begin(), v.end());

@@ -29,8 +29,9 @@ constexpr double kClosingReach = 1.5;
 // A removed vertex goes back over a face at most this many of the face's longest sides off its
 // plane (the lion's put back lie at a median of 0.13, 90 % under 0.38; a few reached 0.98).
 constexpr double kMaxPutBackHeight = 0.5;
-// A vertex beyond a border corner goes back as two triangles closing it only if no angle of
-// them is smaller (a sliver along the border is worse than a point left out).
+// A vertex at the border goes back as triangles that close its corner, or as one triangle across
+// a border edge (D-41), only if no angle of them is smaller (a sliver hanging off the border is
+// worse than a point left out).
 constexpr double kMinBorderPutBackAngle = 15.0 * M_PI / 180.0;
 // A walk around a vertex's fan gives up after this many faces (a fan is far smaller).
 constexpr std::size_t kMaxFanWalk = 1024;
@@ -757,8 +758,9 @@ private:
                 const std::optional<std::uint32_t> g = across(f, k);
                 const std::uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
                 if (!g) {
-                    // D-41: beyond (or on) the border edge a → b, one triangle across it or f
-                    // split in two there; the border then runs a → v → b.
+                    // D-41: next to the border edge a → b (beyond it, on it, or over f near it),
+                    // one triangle across the edge (not a sliver) or f split in two at v; the
+                    // border then runs a → v → b.
                     const Triangle ear{b, a, v};
                     if (angle(ear) >= kMinBorderPutBackAngle)
                         splits.push_back({{}, {ear}, {f}, true});

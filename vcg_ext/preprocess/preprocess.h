@@ -17,7 +17,8 @@
 
 namespace hrsr {
 
-/// A cleaned cloud with oriented unit normals, in increasing input-index order.
+/// A cleaned cloud with oriented unit normals, its points in the order given (reconstruct()
+/// gives them in spatial order, D-40: `input_index` then maps into its reordered copy).
 struct PreparedCloud {
     /// Point -> index in the input point set; empty on HRsR's coarse cloud, which has `node`.
     IndexVector<PointIndex, InputIndex> input_index;

@@ -14,7 +14,7 @@ namespace hrsr {
 enum class PointFate : std::uint8_t {
     Kept,           ///< in the output
     NonFinite,      ///< a coordinate was NaN or infinite (§4.1)
-    Duplicate,      ///< exactly equal to an earlier point, merged into it (D-3)
+    Duplicate,      ///< equal (or near, D-25) to a point before it, merged into it (D-3)
     NoNormal,       ///< no normal could be estimated for it (D-5: degenerate, nothing to copy)
     SmallComponent, ///< in a component smaller than the minimum size after the r cut (§4.6)
 };

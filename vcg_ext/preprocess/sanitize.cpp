@@ -75,10 +75,11 @@ Normalisation bounding_box_normalisation(const std::vector<Vec3>& points, double
 }
 
 // D-25: points closer than kNearDuplicateDistance (normalised units, i.e. a fraction of the
-// diagonal) to an earlier kept point are merged into it like exact duplicates. Their edges are
-// about as short as the rotation-angle cut-off (D-1), so RsR saw them at angle 0 whatever their
-// direction and tore the surface (measured: a 3k sphere with every point doubled at 1e-12 x the
-// diagonal came out as 566 pieces; at 1e-11 with 13 boundary edges; from 1e-10 on, closed).
+// diagonal) to a kept point before them (in the order given) are merged into it like exact
+// duplicates. Their edges are about as short as the rotation-angle cut-off (D-1), so RsR saw them
+// at angle 0 whatever their direction and tore the surface (measured: a 3k sphere with every point
+// doubled at 1e-12 x the diagonal came out as 566 pieces; at 1e-11 with 13 boundary edges; from
+// 1e-10 on, closed).
 void merge_near_duplicates(SanitizedCloud& cloud, PreprocessReport& report) {
     const std::vector<std::uint32_t> representative =
         near_duplicate_representatives(cloud.positions, constants::kNearDuplicateDistance);
@@ -103,9 +104,8 @@ void merge_near_duplicates(SanitizedCloud& cloud, PreprocessReport& report) {
     for (std::uint32_t& d : report.duplicate_of) d = report.duplicate_of[d];
     char tolerance[32];
     std::snprintf(tolerance, sizeof tolerance, "%g", constants::kNearDuplicateDistance);
-    report.warnings.push_back(
-        std::to_string(merged) + " points closer than " + tolerance +
-        " x the bounding-box diagonal to an earlier point were merged into it");
+    report.warnings.push_back(std::to_string(merged) + " points closer than " + tolerance +
+                              " x the bounding-box diagonal to another point were merged into it");
     cloud = std::move(kept);
 }
 

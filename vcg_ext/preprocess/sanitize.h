@@ -18,7 +18,7 @@ struct Normalisation {
     double scale = 1.0;
 };
 
-/// The finite, de-duplicated points, in increasing input-index order.
+/// The finite, de-duplicated points, in the order given.
 struct SanitizedCloud {
     IndexVector<PointIndex, InputIndex> input_index; ///< kept point -> index in the input
     std::vector<Vec3> positions;                     ///< normalised coordinates
