@@ -388,25 +388,22 @@ struct Unmeasured {
     Normalisation normalisation;
 };
 
-// D-40: the input in spatial order, with the time it took to order.
+// D-40: the input in spatial order (timed with pre-processing, whose timings open the run's).
 struct InSpatialOrder {
-    InSpatialOrder(const PointSet& input, const Execution& exec) {
+    InSpatialOrder(const PointSet& input, const Execution& exec, ReconstructionReport& report) {
         begin_phase(exec, "spatial order");
-        const auto start = std::chrono::steady_clock::now();
+        Timer timer(report.preprocess.timings, "spatial order");
         order = spatial_order(input.positions, exec);
         points = reordered(input, order);
-        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     SpatialOrder order;
     PointSet points;
-    double seconds = 0;
 };
 
 // The mesh in input indices and order, measured, its closed components turned outwards (D-6),
 // every input point accounted for.
 Reconstruction finished(const PointSet& input, const InSpatialOrder& ordered, bool outward,
                         Unmeasured out, ReconstructionReport& report) {
-    report.timings.insert(report.timings.begin(), {"spatial order", ordered.seconds});
     restore_input_order(ordered.order, out.mesh, report);
     measure_output(input, out.normalisation, outward, out.mesh, report);
     account(input, out.mesh, report);
@@ -522,7 +519,7 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
                                const Execution& exec, ReconstructionReport& report,
                                rsr::Observer* observer) {
     validate(options);
-    const InSpatialOrder ordered(input, exec);
+    const InSpatialOrder ordered(input, exec, report);
     Unmeasured out = rsr_mesh_of(ordered.points, options, exec, report, observer);
     return finished(input, ordered, options.orient_outward, std::move(out), report);
 }
@@ -532,7 +529,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
                                 rsr::Observer* observer,
                                 ReexpansionObserver* reexpansion_observer) {
     validate(options);
-    InSpatialOrder ordered(input, exec);
+    InSpatialOrder ordered(input, exec, report);
     Unmeasured out =
         hrsr_mesh_of(ordered.points, options, exec, report, observer, reexpansion_observer);
     return finished(input, ordered, options.rsr.orient_outward, std::move(out), report);
