@@ -183,6 +183,9 @@ inline constexpr double kOverlongFactor = 2.0;
 /// HRsR never collapses below min(N, this) points (D-24): RsR needs points to triangulate, and
 /// 12.5 % of a tiny cloud is a single point (3 points gave an empty mesh).
 inline constexpr std::size_t kMinCoarsePoints = 200;
+/// D-42: the collapse works in tiles of about this many consecutive points of the spatial order
+/// (D-40), in parallel; a cloud of at most this many points is one tile.
+inline constexpr std::size_t kCollapseTilePoints = 65536;
 /// D-34: a triangle on the coarse mesh's border whose angle opposite its border edge is at least
 /// this is a sliver over nearly collinear border points, peeled before the re-expansion.
 inline constexpr double kBorderSliverDegrees = 120.0;

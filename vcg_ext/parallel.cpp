@@ -21,11 +21,11 @@ int thread_count(const Execution& exec) {
 }
 
 void parallel_for(const Execution& exec, std::size_t n,
-                  const std::function<void(std::size_t)>& body) {
+                  const std::function<void(std::size_t)>& body, std::size_t chunk) {
     if (n == 0) return;
     // Fixed-size chunks handed out dynamically: the split changes nothing in the results
     // (they are written by index), it only balances uneven per-point work.
-    const std::size_t chunk = std::clamp<std::size_t>(n / 256, 64, 4096);
+    if (chunk == 0) chunk = std::clamp<std::size_t>(n / 256, 64, 4096);
     const std::size_t chunks = (n + chunk - 1) / chunk;
     std::atomic<std::size_t> next{0}, done{0};
     std::atomic<bool> stop{false};

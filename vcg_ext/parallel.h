@@ -17,9 +17,10 @@ struct Execution {
 
 /// Calls body(i) for every i in [0, n), in parallel. Progress is reported from the calling
 /// thread only. An exception thrown by `body` or by the progress callback (including
-/// Cancelled) stops the loop promptly and is rethrown here, on the calling thread.
+/// Cancelled) stops the loop promptly and is rethrown here, on the calling thread. Indices are
+/// handed out in chunks of `chunk` (0: sized from n, for cheap bodies; 1: for a few long tasks).
 void parallel_for(const Execution& exec, std::size_t n,
-                  const std::function<void(std::size_t)>& body);
+                  const std::function<void(std::size_t)>& body, std::size_t chunk = 0);
 
 /// Number of threads parallel_for would use.
 int thread_count(const Execution& exec);

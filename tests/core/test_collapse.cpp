@@ -1,6 +1,7 @@
 #include "errors.h"
 #include "hrsr/collapse.h"
 #include "samplers.h"
+#include "spatial_order.h"
 
 #include <gtest/gtest.h>
 
@@ -122,6 +123,59 @@ TEST(Collapse, TiesAndDuplicatesOfARegularGridAreDeterministic) {
     }
     EXPECT_EQ(a.survivors, b.survivors);
     expect_collapse_invariants(grid, a);
+}
+
+// D-42: a cloud of several tiles, in spatial order as reconstruct() hands it over. The ratio is
+// reached exactly, the records form §13 item 7's forest, nodes of different tiles are merged too
+// (the borders do not stay apart), and the result is the same for 1, 2 and 8 threads.
+TEST(Collapse, TilesReachTheRatioTheSameForAnyThreadCount) {
+    const PointSet sampled = testing::sample_torus(200000, 1.0, 0.35, testing::Density::Graded);
+    const PointSet s = reordered(sampled, spatial_order(sampled.positions, {}));
+    const CollapsedCloud a = run(s, 0.25, 1);
+    EXPECT_FALSE(a.ran_out_of_edges);
+    EXPECT_EQ(a.survivors.size(), 50000u);
+    EXPECT_GT(a.tile_collapses, a.records.size() / 2); // most of it in parallel
+    expect_collapse_invariants(s, a);
+    const std::size_t tiles =
+        (s.size() + constants::kCollapseTilePoints - 1) / constants::kCollapseTilePoints;
+    ASSERT_GT(tiles, 1u);
+    const std::size_t tile_size = (s.size() + tiles - 1) / tiles;
+    std::size_t across = 0;
+    for (const CollapseRecord& r : a.records)
+        across += r.active / tile_size != r.latent / tile_size;
+    EXPECT_GT(across, 0u);
+    for (int threads : {2, 8}) {
+        const CollapsedCloud b = run(s, 0.25, threads);
+        ASSERT_EQ(a.records.size(), b.records.size());
+        for (std::size_t k = 0; k < a.records.size(); ++k) {
+            ASSERT_EQ(a.records[k].active, b.records[k].active) << k;
+            ASSERT_EQ(a.records[k].latent, b.records[k].latent) << k;
+        }
+        EXPECT_EQ(a.survivors, b.survivors);
+        EXPECT_EQ(a.positions, b.positions);
+    }
+}
+
+// D-42: on a regular grid every first cost is the same, so the tiles' first step at p = 3/4
+// goes beyond the budget and the tiles start again below it: still the exact ratio, §13 item 7's
+// forest, and the same records for any thread count.
+TEST(Collapse, TilesStartAgainBelowAStepBeyondTheBudget) {
+    PointSet grid;
+    for (int i = 0; i < 300; ++i)
+        for (int j = 0; j < 300; ++j) {
+            grid.positions.emplace_back(i, j, 0);
+            grid.normals.emplace_back(0, 0, 1);
+        }
+    const PointSet s = reordered(grid, spatial_order(grid.positions, {}));
+    const CollapsedCloud a = run(s, 0.75, 1), b = run(s, 0.75, 8);
+    EXPECT_GT(a.tiles, 1u);
+    EXPECT_GT(a.tile_restarts, 0u);
+    EXPECT_EQ(a.survivors.size(), 67500u);
+    expect_collapse_invariants(s, a);
+    EXPECT_EQ(a.survivors, b.survivors);
+    ASSERT_EQ(a.records.size(), b.records.size());
+    for (std::size_t k = 0; k < a.records.size(); ++k)
+        ASSERT_EQ(a.records[k].latent, b.records[k].latent) << k;
 }
 
 TEST(Collapse, OptionsAreValidatedByName) {

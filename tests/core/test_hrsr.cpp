@@ -57,6 +57,12 @@ ReconstructionOptions hrsr_options(double p) {
     return o;
 }
 
+/// The same mesh: the same vertices (by input point) and the same faces.
+void expect_same_mesh(const Reconstruction& a, const Reconstruction& b) {
+    EXPECT_EQ(a.vertex_input_index, b.vertex_input_index);
+    EXPECT_EQ(a.triangles, b.triangles);
+}
+
 struct Case {
     const char* name;
     PointSet (*cloud)();
@@ -176,6 +182,27 @@ TEST(Hrsr, SameMeshForOneAndTwoThreads) {
         ASSERT_EQ(a.vertex_normals[v], b.vertex_normals[v]);
 }
 
+// D-42: a cloud of several collapse tiles, at the defaults: closed, genus 1, and the same mesh
+// for 1, 2 and 8 threads.
+TEST(Hrsr, TiledCloudGivesTheSameMeshForAnyThreadCount) {
+    const PointSet s = testing::sample_torus(150000, 1.0, 0.3, testing::Density::Graded);
+    ASSERT_GT(s.size(), 2 * constants::kCollapseTilePoints);
+    auto run = [&](int threads) {
+        Execution exec;
+        exec.threads = threads;
+        ReconstructionReport report;
+        Reconstruction r = reconstruct(s, ReconstructionOptions{}, exec, report);
+        EXPECT_EQ(report.mesh.boundary_edges, 0u);
+        EXPECT_EQ(report.mesh.components.size(), 1u);
+        for (const auto& component : report.mesh.components) EXPECT_EQ(component.genus(), 1);
+        EXPECT_GE(report.vertex_reference_ratio, 0.999);
+        return r;
+    };
+    const Reconstruction a = run(1);
+    expect_same_mesh(a, run(2));
+    expect_same_mesh(a, run(8));
+}
+
 // D-33's path (a noisy cloud, collapsed and re-expanded on smoothed positions), with normals
 // given and estimated: the same mesh for 1, 2 and 8 threads.
 TEST(Hrsr, NoisyCloudGivesTheSameMeshForAnyThreadCount) {
@@ -193,11 +220,9 @@ TEST(Hrsr, NoisyCloudGivesTheSameMeshForAnyThreadCount) {
             EXPECT_TRUE(report.preprocess.denoised);
             return r;
         };
-        const Reconstruction a = run(1), b = run(2), c = run(8);
-        EXPECT_EQ(a.vertex_input_index, b.vertex_input_index);
-        EXPECT_EQ(a.triangles, b.triangles);
-        EXPECT_EQ(a.vertex_input_index, c.vertex_input_index);
-        EXPECT_EQ(a.triangles, c.triangles);
+        const Reconstruction a = run(1);
+        expect_same_mesh(a, run(2));
+        expect_same_mesh(a, run(8));
     }
 }
 

@@ -27,6 +27,9 @@ struct CollapsedCloud {
     std::vector<CollapseRecord> records; ///< in the order they happened
     std::size_t budget = 0;              ///< collapses asked for
     bool ran_out_of_edges = false;       ///< stopped before the budget: no valid edge left
+    std::size_t tiles = 1;               ///< D-42: tiles of the spatial order
+    std::size_t tile_collapses = 0;      ///< D-42: collapses done inside the tiles, in parallel
+    std::size_t tile_restarts = 0; ///< D-42: the tiles started again (a step beyond the budget)
 };
 
 /// Collapses the cloud (positions: the algorithm's unsmoothed coordinates; normals: unit,
