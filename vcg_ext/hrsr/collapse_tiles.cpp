@@ -19,26 +19,37 @@ struct TileRun {
     std::vector<CollapseRecord> records; ///< step by step: the tiles in order, then across
     bool overshot = false; ///< a step went beyond the target: start again below `ceiling`
     double ceiling = 0;
+
+    // An edge i–j joins two tiles (or not): both ends are border nodes of their tiles.
+    void mark_border(const Tiles& tiles, std::uint32_t i, std::uint32_t j) {
+        const std::uint32_t ti = tiles.tile_of(i), tj = tiles.tile_of(j);
+        if (ti == tj) return;
+        collapsers[ti]->mark_border(i);
+        collapsers[tj]->mark_border(j);
+    }
 };
 
 // After the tiles' part of a step: the edges they changed in other tiles, in tile order.
-void apply_relinks(CollapseGraph& g, TileRun& run) {
+void apply_relinks(CollapseGraph& g, const Tiles& tiles, TileRun& run) {
     for (auto& collapser : run.collapsers) {
-        for (const Relink& r : collapser->relinks)
-            g.relink(g.survivor(r.node), r.dead, g.survivor(r.into));
+        for (const Relink& r : collapser->relinks) {
+            const std::uint32_t node = g.survivor(r.node), into = g.survivor(r.into);
+            g.relink(node, r.dead, into);
+            run.mark_border(tiles, node, into);
+        }
         std::vector<Relink>().swap(collapser->relinks);
     }
 }
 
-// The edges across tile borders whose cost is at most `bound`, in tile order.
-std::vector<EdgeKey> edges_across(const CollapseGraph& g, const Tiles& tiles, double bound,
-                                  const Execution& exec) {
-    const std::size_t n = g.x.size();
+// The edges across tile borders whose cost is at most `bound`. Only the tiles' border nodes are
+// looked at; the queue they go to orders them, so the order found in does not matter.
+std::vector<EdgeKey> edges_across(const CollapseGraph& g, const Tiles& tiles, const TileRun& run,
+                                  double bound, const Execution& exec) {
     std::vector<std::vector<EdgeKey>> found(tiles.count);
     parallel_for(
         exec, tiles.count,
         [&](std::size_t t) {
-            for (std::uint32_t i = tiles.begin(t); i < tiles.end(t, n); ++i) {
+            for (std::uint32_t i : run.collapsers[t]->border()) {
                 if (!g.alive[i]) continue;
                 for (std::uint32_t j : g.neighbours[i])
                     if (j > i && tiles.tile_of(j) != t) {
@@ -59,7 +70,7 @@ void collapse_across(CollapseGraph& g, const Tiles& tiles, TileRun& run, double 
                      std::size_t target, const Execution& exec) {
     auto later = [](const EdgeKey& p, const EdgeKey& q) { return q < p; };
     std::priority_queue<EdgeKey, std::vector<EdgeKey>, decltype(later)> queue(
-        later, edges_across(g, tiles, bound, exec));
+        later, edges_across(g, tiles, run, bound, exec));
     auto collapser = [&](std::uint32_t i) -> RangeCollapser& {
         return *run.collapsers[tiles.tile_of(i)];
     };
@@ -80,6 +91,7 @@ void collapse_across(CollapseGraph& g, const Tiles& tiles, TileRun& run, double 
         collapser(a).refresh(a);
         for (std::uint32_t c : g.neighbours[a]) {
             collapser(c).refresh(c);
+            run.mark_border(tiles, a, c);
             if (tiles.tile_of(c) != tiles.tile_of(a)) {
                 const EdgeKey key = g.edge_key(a, c);
                 if (key.cost <= bound) queue.push(key);
@@ -142,7 +154,7 @@ TileRun collapse_tiles(CollapseGraph& g, const Tiles& tiles, std::size_t target,
             run.ceiling = (last_bound + bound) / 2;
             return run;
         }
-        apply_relinks(g, run);
+        apply_relinks(g, tiles, run);
         collapse_across(g, tiles, run, bound, target, exec);
         // Aim at 1/kTileAim of what is left, along the last step's cost per collapse.
         const std::size_t now = run.records.size();

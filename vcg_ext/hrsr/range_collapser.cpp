@@ -6,7 +6,7 @@ namespace hrsr::collapsing {
 
 RangeCollapser::RangeCollapser(CollapseGraph& g, std::uint32_t begin, std::uint32_t end,
                                const Execution* exec)
-    : g_(g), begin_(begin), end_(end), queue_(end - begin) {
+    : g_(g), begin_(begin), end_(end), queue_(end - begin), on_border_(end - begin, 0) {
     std::vector<EdgeKey> best(end - begin);
     std::vector<std::uint8_t> has_best(end - begin, 0);
     auto find = [&](std::size_t i) {
@@ -17,6 +17,13 @@ RangeCollapser::RangeCollapser(CollapseGraph& g, std::uint32_t begin, std::uint3
     else
         for (std::size_t i = 0; i < best.size(); ++i) find(i);
     queue_.assign(std::move(best), has_best);
+    if (begin == 0 && end == g.x.size()) return; // the whole graph: nothing outside
+    for (std::uint32_t i = begin; i < end; ++i)
+        for (std::uint32_t j : g_.neighbours[i])
+            if (!contains(j)) {
+                mark_border(i);
+                break;
+            }
 }
 
 void RangeCollapser::add_costs(std::vector<float>& costs) const {

@@ -44,6 +44,16 @@ public:
     void refresh(std::uint32_t i);
     void erase(std::uint32_t i) { queue_.erase(i - begin_); }
 
+    /// Notes that node i of the range has (or had) an edge to a node outside it.
+    void mark_border(std::uint32_t i) {
+        if (on_border_[i - begin_]) return;
+        on_border_[i - begin_] = 1;
+        border_.push_back(i);
+    }
+    /// The range's nodes that ever had an edge outside it: a superset of the live ones that
+    /// have one now (D-42 looks for edges across tiles there only).
+    const std::vector<std::uint32_t>& border() const { return border_; }
+
     std::vector<Relink> relinks;
 
 private:
@@ -52,6 +62,8 @@ private:
     CollapseGraph& g_;
     std::uint32_t begin_, end_;
     VertexHeap queue_; ///< nodes of the range with an admissible edge, by their smallest one
+    std::vector<std::uint8_t> on_border_;
+    std::vector<std::uint32_t> border_;
 };
 
 } // namespace hrsr::collapsing
