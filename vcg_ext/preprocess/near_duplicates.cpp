@@ -2,20 +2,74 @@
 
 #include <array>
 #include <cmath>
-#include <unordered_map>
 
 namespace hrsr {
 
 namespace {
 
 using Cell = std::array<std::int64_t, 3>;
+constexpr std::uint32_t kNone = ~0u;
 
-struct CellHash {
-    std::size_t operator()(const Cell& c) const {
-        std::uint64_t h = 1469598103934665603ull;
-        for (std::int64_t v : c) h = (h ^ std::uint64_t(v)) * 1099511628211ull;
-        return std::size_t(h);
+std::uint64_t hash_of(const Cell& c) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::int64_t v : c) h = (h ^ std::uint64_t(v)) * 1099511628211ull;
+    // splitmix64's finaliser: the table takes the low bits, which FNV leaves weak.
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+    return h ^ (h >> 31);
+}
+
+// The representatives' cells, each with the head of its chain of representatives: open
+// addressing with linear probing over a power-of-two table at most half full. A slot stores the
+// head and the hash's high half; the cell itself is the head's, recomputed from its position (no
+// copy of 24 bytes per point, no node per cell: the table is 8 bytes a slot, one cache line a
+// probe).
+class CellTable {
+public:
+    CellTable(const std::vector<Vec3>& positions, double width)
+        : positions_(positions), width_(width) {
+        std::size_t capacity = 16;
+        while (capacity < 2 * positions.size()) capacity *= 2;
+        slots_.assign(capacity, {kNone, 0});
+        mask_ = capacity - 1;
     }
+
+    Cell cell_of(const Vec3& p) const {
+        return {std::int64_t(std::floor(p[0] / width_)), std::int64_t(std::floor(p[1] / width_)),
+                std::int64_t(std::floor(p[2] / width_))};
+    }
+
+    /// The head of the cell's chain, or kNone.
+    std::uint32_t head(const Cell& c) const { return slots_[find(c)].head; }
+
+    /// Makes point i the head of its cell's chain; returns the previous head (or kNone).
+    std::uint32_t push(const Cell& c, std::uint32_t i) {
+        Slot& slot = slots_[find(c)];
+        const std::uint32_t previous = slot.head;
+        slot = {i, std::uint32_t(hash_of(c) >> 32)};
+        return previous;
+    }
+
+private:
+    struct Slot {
+        std::uint32_t head, tag;
+    };
+
+    // The cell's slot, or the empty slot where it would go.
+    std::size_t find(const Cell& c) const {
+        const std::uint64_t h = hash_of(c);
+        const std::uint32_t tag = std::uint32_t(h >> 32);
+        for (std::size_t s = h & mask_;; s = (s + 1) & mask_) {
+            const Slot& slot = slots_[s];
+            if (slot.head == kNone || (slot.tag == tag && cell_of(positions_[slot.head]) == c))
+                return s;
+        }
+    }
+
+    const std::vector<Vec3>& positions_;
+    double width_;
+    std::vector<Slot> slots_;
+    std::size_t mask_ = 0;
 };
 
 } // namespace
@@ -24,10 +78,7 @@ std::vector<std::uint32_t> near_duplicate_representatives(const std::vector<Vec3
                                                           double tolerance) {
     const std::uint32_t n = std::uint32_t(positions.size());
     std::vector<std::uint32_t> representative(n);
-    // Representatives only, chained per cell: head[cell] -> next[...] -> ... -> kNone.
-    constexpr std::uint32_t kNone = ~0u;
-    std::unordered_map<Cell, std::uint32_t, CellHash> head;
-    head.reserve(n);
+    // Representatives only, chained per cell: head of the cell -> next[...] -> ... -> kNone.
     std::vector<std::uint32_t> next(n, kNone);
     const double squared = tolerance * tolerance;
     // Cells twice the tolerance wide: a ball of radius `tolerance` then meets at most two cells
@@ -37,36 +88,26 @@ std::vector<std::uint32_t> near_duplicate_representatives(const std::vector<Vec3
     // rounded quotient, never rounds across a cell's middle the wrong way. Points within 1e-6
     // of the middle look on both sides anyway (cheap insurance).
     const double width = 2 * tolerance;
+    CellTable cells(positions, width);
     for (std::uint32_t i = 0; i < n; ++i) {
         const Vec3& p = positions[i];
-        Cell cell;
+        const Cell cell = cells.cell_of(p);
         std::array<std::int64_t, 3> low, high; // cell offsets to search, per axis
         for (int axis = 0; axis < 3; ++axis) {
-            const double scaled = p[axis] / width, floor = std::floor(scaled);
-            const double half = scaled - floor - 0.5;
-            cell[axis] = std::int64_t(floor);
+            const double scaled = p[axis] / width;
+            const double half = scaled - std::floor(scaled) - 0.5;
             low[axis] = half < 1e-6 ? -1 : 0;
             high[axis] = half > -1e-6 ? 1 : 0;
         }
         std::uint32_t best = kNone;
         for (std::int64_t a = low[0]; a <= high[0]; ++a)
             for (std::int64_t b = low[1]; b <= high[1]; ++b)
-                for (std::int64_t c = low[2]; c <= high[2]; ++c) {
-                    const auto it = head.find({cell[0] + a, cell[1] + b, cell[2] + c});
-                    if (it == head.end()) continue;
-                    for (std::uint32_t r = it->second; r != kNone; r = next[r])
+                for (std::int64_t c = low[2]; c <= high[2]; ++c)
+                    for (std::uint32_t r = cells.head({cell[0] + a, cell[1] + b, cell[2] + c});
+                         r != kNone; r = next[r])
                         if (r < best && (positions[r] - p).SquaredNorm() <= squared) best = r;
-                }
-        if (best != kNone) {
-            representative[i] = best;
-            continue;
-        }
-        representative[i] = i;
-        auto [it, inserted] = head.emplace(cell, i);
-        if (!inserted) {
-            next[i] = it->second;
-            it->second = i;
-        }
+        representative[i] = best != kNone ? best : i;
+        if (best == kNone) next[i] = cells.push(cell, i);
     }
     return representative;
 }
