@@ -136,10 +136,8 @@ TEST(Collapse, TilesReachTheRatioTheSameForAnyThreadCount) {
     EXPECT_EQ(a.survivors.size(), 50000u);
     EXPECT_GT(a.tile_collapses, a.records.size() / 2); // most of it in parallel
     expect_collapse_invariants(s, a);
-    const std::size_t tiles =
-        (s.size() + constants::kCollapseTilePoints - 1) / constants::kCollapseTilePoints;
-    ASSERT_GT(tiles, 1u);
-    const std::size_t tile_size = (s.size() + tiles - 1) / tiles;
+    ASSERT_GT(a.tiles, 1u);
+    const std::size_t tile_size = (s.size() + a.tiles - 1) / a.tiles;
     std::size_t across = 0;
     for (const CollapseRecord& r : a.records)
         across += r.active / tile_size != r.latent / tile_size;

@@ -40,13 +40,14 @@ public:
     }
 
     /// The head of the cell's chain, or kNone.
-    std::uint32_t head(const Cell& c) const { return slots_[find(c)].head; }
+    std::uint32_t head(const Cell& c) const { return slots_[find(c, hash_of(c))].head; }
 
     /// Makes point i the head of its cell's chain; returns the previous head (or kNone).
     std::uint32_t push(const Cell& c, std::uint32_t i) {
-        Slot& slot = slots_[find(c)];
+        const std::uint64_t h = hash_of(c);
+        Slot& slot = slots_[find(c, h)];
         const std::uint32_t previous = slot.head;
-        slot = {i, std::uint32_t(hash_of(c) >> 32)};
+        slot = {i, std::uint32_t(h >> 32)};
         return previous;
     }
 
@@ -55,9 +56,8 @@ private:
         std::uint32_t head, tag;
     };
 
-    // The cell's slot, or the empty slot where it would go.
-    std::size_t find(const Cell& c) const {
-        const std::uint64_t h = hash_of(c);
+    // The cell's slot, or the empty slot where it would go (h: the cell's hash).
+    std::size_t find(const Cell& c, std::uint64_t h) const {
         const std::uint32_t tag = std::uint32_t(h >> 32);
         for (std::size_t s = h & mask_;; s = (s + 1) & mask_) {
             const Slot& slot = slots_[s];
