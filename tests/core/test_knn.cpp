@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -76,6 +77,31 @@ TEST(Knn, TableRowsEqualSingleQueries) {
         index.neighbours_of(i, 12, found);
         for (int j = 0; j < 12; ++j) EXPECT_EQ(table.row(i)[j], found[std::size_t(j)].index);
     }
+}
+
+TEST(Knn, DistancesAtRanksEqualTheSortedNeighbours) {
+    // A grid (ties at every rank), exact duplicates (more than a rank of them), and too few
+    // points for the deepest rank.
+    std::vector<Vec3> points;
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) points.emplace_back(i, j, 0);
+    for (int d = 0; d < 5; ++d) points.emplace_back(2, 2, 0);
+    const KnnIndex index(points);
+    const std::vector<int> ranks{1, 4, 9, 0, 40, 41, 60};
+    std::vector<Neighbour> found;
+    std::vector<double> at_ranks;
+    for (std::uint32_t q = 0; q < points.size(); ++q) {
+        index.neighbours_of(q, 60, found);
+        index.squared_distances_at_ranks(q, ranks, at_ranks);
+        ASSERT_EQ(at_ranks.size(), ranks.size());
+        for (std::size_t r = 0; r < ranks.size(); ++r) {
+            const bool exists = ranks[r] >= 1 && std::size_t(ranks[r]) <= found.size();
+            EXPECT_EQ(at_ranks[r], exists ? found[std::size_t(ranks[r]) - 1].squared_distance
+                                          : std::numeric_limits<double>::infinity())
+                << "point " << q << " rank " << ranks[r];
+        }
+    }
+    EXPECT_EQ(found.size(), points.size() - 1);
 }
 
 TEST(NeighbourGraph, SymmetricUnionIsSymmetricSortedAndLoopFree) {

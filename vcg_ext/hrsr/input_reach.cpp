@@ -22,11 +22,9 @@ std::vector<std::vector<double>> input_reach(const std::vector<Vec3>& points,
     if (at.empty() || deepest < 1) return reach;
     const KnnIndex index(points);
     parallel_for(exec, at.size(), [&](std::size_t i) {
-        thread_local std::vector<Neighbour> found;
-        index.neighbours_of(at[i].value(), deepest, found);
-        for (std::size_t r = 0; r < ranks.size(); ++r)
-            if (ranks[r] >= 1 && std::size_t(ranks[r]) <= found.size())
-                reach[r][i] = std::sqrt(found[std::size_t(ranks[r]) - 1].squared_distance);
+        thread_local std::vector<double> squared;
+        index.squared_distances_at_ranks(at[i].value(), ranks, squared);
+        for (std::size_t r = 0; r < ranks.size(); ++r) reach[r][i] = std::sqrt(squared[r]);
     });
     return reach;
 }
