@@ -117,7 +117,10 @@ nlohmann::json hrsr_json(const ReconstructionReport& r) {
             {"border_notches_closed", r.border_notches_closed},
             {"improvement_flips", e.improvement_flips},
             {"merged_by_l_min", e.merged_by_l_min},
-            {"stopped_at_l_min", e.stopped_at_l_min}};
+            {"stopped_at_l_min", e.stopped_at_l_min},
+            {"tiles", e.tiles},
+            {"records_replayed_in_tiles", e.replayed_in_tiles},
+            {"records_deferred_at_tile_borders", e.deferred_at_tile_borders}};
 }
 
 nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionReport& r) {

@@ -80,6 +80,7 @@ public:
     std::size_t size() const { return values_.size(); }
     bool empty() const { return values_.empty(); }
     void reserve(std::size_t n) { values_.reserve(n); }
+    void resize(std::size_t n, const Value& value) { values_.resize(n, value); }
     void push_back(const Value& v) { values_.push_back(v); }
     /// The key the next push_back will have.
     Key next_key() const { return Key(std::uint32_t(values_.size())); }

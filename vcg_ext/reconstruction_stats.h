@@ -47,6 +47,9 @@ struct ReexpansionStats {
     std::size_t merged_by_l_min = 0;       ///< latent points aliased because of l_min
     std::size_t border_slivers_peeled = 0; ///< D-34: coarse border slivers removed first
     std::size_t border_splits = 0;         ///< D-34: splits that put the new vertex on the border
+    std::size_t tiles = 1;                 ///< D-43: tiles replayed in parallel
+    std::size_t replayed_in_tiles = 0;     ///< D-43: records replayed by their tile's thread
+    std::size_t deferred_at_tile_borders = 0; ///< D-43: reached another tile: replayed after
     bool stopped_at_l_min = false;
 };
 

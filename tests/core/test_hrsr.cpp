@@ -196,6 +196,10 @@ TEST(Hrsr, TiledCloudGivesTheSameMeshForAnyThreadCount) {
         EXPECT_EQ(report.mesh.components.size(), 1u);
         for (const auto& component : report.mesh.components) EXPECT_EQ(component.genus(), 1);
         EXPECT_GE(report.vertex_reference_ratio, 0.999);
+        // D-43: most records replayed by their tile's thread, some waiting at tile borders.
+        EXPECT_EQ(report.reexpansion.tiles, 3u);
+        EXPECT_GT(report.reexpansion.replayed_in_tiles, report.reexpansion.records / 2);
+        EXPECT_GT(report.reexpansion.deferred_at_tile_borders, 0u);
         return r;
     };
     const Reconstruction a = run(1);

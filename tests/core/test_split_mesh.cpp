@@ -190,6 +190,75 @@ TEST(SplitMesh, FlipsKeepCountsAndRespectValence) {
     EXPECT_EQ(flippable_spokes_of_valence_three, 0u);
 }
 
+// The face holding the directed edge u→w (its index z), or null.
+SFace* face_with_edge(const SplitMesh& m, std::uint32_t u, std::uint32_t w, int& z) {
+    for (const SFace& face : m.vcg_mesh().face)
+        if (!face.IsD())
+            for (int k = 0; k < 3; ++k)
+                if (m.vertex_of(&face, k) == u && m.vertex_of(&face, (k + 1) % 3) == w) {
+                    z = k;
+                    return const_cast<SFace*>(&face);
+                }
+    return nullptr;
+}
+
+TEST(SplitMesh, GuardStopsAtAnotherTilesVertexBeforeAnyChange) {
+    // D-43: the hexagon's centre and spokes 1-3 in tile 0, spokes 4-6 in tile 1; one slot for a
+    // split (vertex 7, faces 6 and 7), owned by tile 0.
+    const Fixture h = hexagon();
+    SplitMesh m(h.positions, h.triangles, 8, 8);
+    m.add_slots(1, 2);
+    ASSERT_EQ(m.vertex_count(), 8u);
+    EXPECT_EQ(m.face_count(), 6u);
+    EXPECT_TRUE(m.isolated(7));
+    m.set_owners({0, 0, 0, 0, 1, 1, 1, 0});
+    const std::vector<Triangle> before = m.triangles();
+    m.guard(true);
+    SplitMesh::work_for(0);
+    const Star star = m.star(0);
+    EXPECT_THROW(m.claim(star), TileConflict);
+    int z = -1;
+    SFace* own = face_with_edge(m, 0, 2, z); // spoke {0, 2}: the quad 0, 1, 2, 3 is tile 0's
+    ASSERT_NE(own, nullptr);
+    EXPECT_TRUE(m.can_flip(own, z));
+    SFace* shared = face_with_edge(m, 0, 4, z); // spoke {0, 4}: the quad holds 3, 4 and 5
+    ASSERT_NE(shared, nullptr);
+    EXPECT_THROW(m.can_flip(shared, z), TileConflict);
+    EXPECT_THROW(m.flip(shared, z), TileConflict);
+    EXPECT_THROW(m.remove_face(shared), TileConflict);
+    EXPECT_THROW(m.split(0, star, 1, 4, Vec3(0.1, 0, 0), SplitMesh::BorderSplit::None, {7, {6, 7}}),
+                 TileConflict);
+    EXPECT_EQ(m.triangles(), before);
+    EXPECT_TRUE(m.isolated(7));
+    SplitMesh::work_for(1);
+    EXPECT_NO_THROW(m.position(5));
+    EXPECT_THROW(m.position(1), TileConflict);
+    EXPECT_THROW(m.move(0, Vec3(0, 0, 0)), TileConflict);
+    m.guard(false);
+    // Unguarded, the same split goes into its slots.
+    EXPECT_EQ(
+        m.split(0, m.star(0), 1, 4, Vec3(0.1, 0, 0), SplitMesh::BorderSplit::None, {7, {6, 7}}),
+        7u);
+    const Counts after = check(m);
+    EXPECT_EQ(after.v, 8u);
+    EXPECT_EQ(after.f, 8u);
+    EXPECT_EQ(m.face_count(), 8u);
+    EXPECT_EQ(after.euler, 1);
+}
+
+TEST(SplitMesh, SplitsInGuardedTilesCountTheirFacesWhenTheGuardEnds) {
+    const Fixture h = hexagon();
+    SplitMesh m(h.positions, h.triangles, 8, 8);
+    m.add_slots(1, 2);
+    m.set_owners(std::vector<std::uint32_t>(8, 3));
+    m.guard(true);
+    SplitMesh::work_for(3);
+    m.split(0, m.star(0), 2, 5, Vec3(0.1, 0.1, 0), SplitMesh::BorderSplit::None, {7, {6, 7}});
+    m.guard(false);
+    EXPECT_EQ(m.face_count(), 8u);
+    EXPECT_EQ(check(m).f, 8u);
+}
+
 TEST(SplitMesh, RemovingAFaceOpensTheBoundary) {
     const Fixture o = octahedron();
     SplitMesh m(o.positions, o.triangles, 16, 16);

@@ -1,5 +1,6 @@
 #include "hrsr/reexpansion.h"
 
+#include "hrsr/collapse_tiles.h"
 #include "hrsr/crossings.h"
 #include "hrsr/local_flips.h"
 #include "hrsr/split_choice.h"
@@ -90,21 +91,59 @@ std::size_t peel_border_slivers(SplitMesh& mesh) {
     return peeled;
 }
 
+// Counters summed over tiles (each tile counts its own records).
+void add(ReexpansionStats& into, const ReexpansionStats& from) {
+    into.replayed += from.replayed;
+    into.skipped_no_vertex += from.skipped_no_vertex;
+    into.failed_no_pair += from.failed_no_pair;
+    into.unresolved_crossings += from.unresolved_crossings;
+    into.crossing_flips += from.crossing_flips;
+    into.triangles_removed += from.triangles_removed;
+    into.improvement_flips += from.improvement_flips;
+    into.merged_by_l_min += from.merged_by_l_min;
+    into.border_splits += from.border_splits;
+    into.replayed_in_tiles += from.replayed_in_tiles;
+}
+
 class Replayer {
 public:
+    /// Record k is replayed as the (records − 1 − k)-th: its new vertex and faces take the slots
+    /// of that rank (D-43), so that splits in tiles never allocate and ids do not depend on which
+    /// thread got there first; replayed in order, the ids are the ones a sequential replay gives.
     Replayer(const ReexpansionInput& input, ReexpansionObserver* observer)
-        : points_(input.points), normals_(input.normals), options_(input.options),
-          observer_(observer), mesh_(input.coarse.positions, input.coarse.triangles,
-                                     input.coarse.positions.size() + input.records.size(),
-                                     input.coarse.triangles.size() + 2 * input.records.size()),
+        : points_(input.points), normals_(input.normals), records_(input.records),
+          options_(input.options), l_min_(input.l_min), observer_(observer),
+          mesh_(input.coarse.positions, input.coarse.triangles,
+                input.coarse.positions.size() + input.records.size(),
+                input.coarse.triangles.size() + 2 * input.records.size()),
           vertices_of_(input.points.size(), input.coarse.vertex_node),
-          vertex_node_(input.coarse.vertex_node) {
-        vertex_node_.reserve(input.coarse.vertex_node.size() + input.records.size());
+          vertex_node_(input.coarse.vertex_node), first_vertex_(input.coarse.positions.size()),
+          first_face_(input.coarse.triangles.size()), tiles_(input.points.size()),
+          waiting_(input.points.size(), 0) {
+        mesh_.add_slots(records_.size(), 2 * records_.size());
+        vertex_node_.resize(first_vertex_ + records_.size(), ReexpandedMesh::kNoNode);
         alias_ = IndexVector<PointIndex, PointIndex>(input.points.size(), ReexpandedMesh::kNoNode);
         for (PointIndex node : input.coarse.vertex_node) alias_[node] = node;
+        if (tiles_.count > 1) {
+            std::vector<std::uint32_t> owner(mesh_.vertex_count());
+            for (std::size_t v = 0; v < first_vertex_; ++v)
+                owner[v] = tiles_.tile_of(vertex_node_[VertexIndex(std::uint32_t(v))].value());
+            for (std::size_t rank = 0; rank < records_.size(); ++rank)
+                owner[first_vertex_ + rank] = tiles_.tile_of(record(rank).latent);
+            mesh_.set_owners(std::move(owner));
+        }
     }
 
     std::size_t peel_border_slivers() { return hrsr::peel_border_slivers(mesh_); }
+
+    std::size_t records() const { return records_.size(); }
+    const CollapseRecord& record(std::size_t rank) const {
+        return records_[records_.size() - 1 - rank];
+    }
+    bool short_record(std::size_t rank) const {
+        const CollapseRecord& r = record(rank);
+        return l_min_ > 0 && (r.active_before - r.latent_before).Norm() < l_min_;
+    }
 
     // Aliasing (D-16): b is represented by a's vertices from now on.
     void alias(const CollapseRecord& r) {
@@ -112,71 +151,222 @@ public:
         alias_[PointIndex(r.latent)] = alias_[PointIndex(r.active)];
     }
 
-    void replay(const CollapseRecord& r, ReexpansionStats& stats) {
-        // Stays valid while r.latent's entry changes: that is another word or list.
-        const NodeVertices::Span candidates = vertices_of_.of(r.active);
-        if (candidates.size == 0) { // the node never reached the mesh: its subtree is dropped
-            ++stats.skipped_no_vertex;
-            return;
+    /// Replays the records of ranks [begin, end) (l_min merges the short ones: `merge_short`),
+    /// those of one tile each by one thread where the whole stretch is inside tiles (D-43).
+    void replay_range(std::size_t begin, std::size_t end, bool merge_short, const Execution& exec,
+                      ReexpansionStats& stats) {
+        for (std::size_t rank = begin, report = begin; rank < end;) {
+            if (exec.progress && rank >= report) { // often enough to cancel promptly
+                exec.progress->update(double(rank) / double(records_.size()));
+                report = rank + 1024;
+            }
+            std::size_t stretch = rank;
+            while (stretch < end && inside_tile(stretch)) ++stretch;
+            if (stretch - rank >= kMinTiledStretch) {
+                replay_in_tiles(rank, stretch, merge_short, exec, stats);
+                rank = stretch;
+            } else {
+                std::uint32_t made = 0;
+                step(rank, merge_short, stats, made);
+                ++rank;
+            }
         }
-        bool unresolved = false;
-        const std::size_t removed_before = stats.triangles_removed;
-        for (std::uint32_t c : candidates) {
-            if (mesh_.isolated(c)) continue;
-            const CrossingStats cs =
-                resolve_crossings(mesh_, c, r.active_before, r.latent_before, normals_[r.active]);
-            stats.crossing_flips += cs.flips;
-            stats.triangles_removed += cs.triangles_removed;
-            unresolved = unresolved || cs.unresolved > 0 || cs.round_limit;
-            mesh_.move(c, r.active_before);
-        }
-        for (std::uint32_t c : candidates) { // the first copy (in id order) with a valid pair
-            if (mesh_.isolated(c)) continue;
-            Star& star = star_; // reused: no allocation per split
-            mesh_.star(c, star);
-            const SplitChoice choice =
-                choose_split(mesh_, c, star, r.active_before, r.latent_before);
-            if (!choice.found) continue;
-            const std::uint32_t c2 =
-                mesh_.split(c, star, choice.a, choice.b, r.latent_before, choice.omit);
-            vertex_node_.push_back(PointIndex(r.latent));
-            vertices_of_.set(r.latent, c2);
-            alias_[PointIndex(r.latent)] = PointIndex(r.latent);
-            ++stats.replayed;
-            stats.border_splits += choice.omit != SplitMesh::BorderSplit::None;
-            if (unresolved) ++stats.unresolved_crossings;
-            stats.improvement_flips += improve_around(mesh_, c2, options_);
-            if (observer_)
-                observer_->split_done(mesh_, c, c2, r.active_before, r.latent_before,
-                                      stats.triangles_removed - removed_before, unresolved);
-            return;
-        }
-        ++stats.failed_no_pair;
-        alias(r);
     }
 
     // Every vertex at its own node's input point (the last move of a node restores it anyway
     // when every record was replayed; after a stop this is the snap-to-input of §8.1).
     void snap_to_input() {
         for (VertexIndex v : vertex_node_.keys())
-            mesh_.move(v.value(), points_[vertex_node_[v].value()]);
+            if (vertex_node_[v] != ReexpandedMesh::kNoNode)
+                mesh_.move(v.value(), points_[vertex_node_[v].value()]);
     }
 
+    /// The mesh, its vertices renumbered without the slots of records that made none (in slot
+    /// order: the numbering of a sequential replay).
     ReexpandedMesh take_result() {
-        return {std::move(vertex_node_), mesh_.triangles(), mesh_.border_edges(),
-                std::move(alias_)};
+        std::vector<std::uint32_t> renumber(vertex_node_.size(), ~0u);
+        IndexVector<VertexIndex, PointIndex> vertex_node;
+        for (VertexIndex v : vertex_node_.keys())
+            if (vertex_node_[v] != ReexpandedMesh::kNoNode) {
+                renumber[v.value()] = std::uint32_t(vertex_node.size());
+                vertex_node.push_back(vertex_node_[v]);
+            }
+        std::vector<Triangle> triangles = mesh_.triangles();
+        for (Triangle& t : triangles)
+            for (std::uint32_t& v : t) v = renumber[v];
+        std::vector<std::array<std::uint32_t, 2>> border = mesh_.border_edges();
+        for (auto& e : border)
+            for (std::uint32_t& v : e) v = renumber[v];
+        return {std::move(vertex_node), std::move(triangles), std::move(border), std::move(alias_)};
     }
 
 private:
+    // Below this many records in a row inside tiles the threads would cost more than they save.
+    static constexpr std::size_t kMinTiledStretch = 256;
+
+    enum class Outcome { Done, Conflict, ImproveLater };
+    struct Late {
+        std::size_t rank;
+        std::uint32_t c2; ///< ImproveLater: the vertex the split made; Conflict: unused
+        Outcome outcome;
+    };
+
+    bool inside_tile(std::size_t rank) const {
+        const CollapseRecord& r = record(rank);
+        return tiles_.count > 1 && tiles_.tile_of(r.active) == tiles_.tile_of(r.latent);
+    }
+
+    // One record as a sequential replay takes it.
+    // `made`: the vertex a split made (for flips that wait).
+    Outcome step(std::size_t rank, bool merge_short, ReexpansionStats& stats, std::uint32_t& made) {
+        if (merge_short && short_record(rank)) {
+            alias(record(rank));
+            ++stats.merged_by_l_min;
+            return Outcome::Done;
+        }
+        return replay(rank, stats, made);
+    }
+
+    // D-43: ranks [begin, end) all inside tiles; each tile's records in order by one thread,
+    // the mesh guarded. A record whose work reaches another tile's vertex stops before it changes
+    // anything there and waits, with every later record of its nodes, until the threads are
+    // done; then the waiting records are replayed in order.
+    void replay_in_tiles(std::size_t begin, std::size_t end, bool merge_short,
+                         const Execution& exec, ReexpansionStats& stats) {
+        std::vector<std::vector<std::uint32_t>> by_tile(tiles_.count);
+        for (std::size_t rank = begin; rank < end; ++rank)
+            by_tile[tiles_.tile_of(record(rank).active)].push_back(std::uint32_t(rank));
+        std::vector<std::uint32_t> busy;
+        for (std::uint32_t t = 0; t < by_tile.size(); ++t)
+            if (!by_tile[t].empty()) busy.push_back(t);
+        std::vector<ReexpansionStats> tile_stats(busy.size());
+        std::vector<std::vector<Late>> late(busy.size());
+        const Execution threads{exec.threads, nullptr};
+        mesh_.guard(true);
+        try {
+            parallel_for(
+                threads, busy.size(),
+                [&](std::size_t i) {
+                    replay_tile(by_tile[busy[i]], busy[i], merge_short, tile_stats[i], late[i]);
+                },
+                1);
+        } catch (...) {
+            mesh_.guard(false);
+            throw;
+        }
+        mesh_.guard(false);
+        std::vector<Late> all;
+        for (std::size_t i = 0; i < busy.size(); ++i) {
+            add(stats, tile_stats[i]);
+            all.insert(all.end(), late[i].begin(), late[i].end());
+        }
+        std::sort(all.begin(), all.end(),
+                  [](const Late& a, const Late& b) { return a.rank < b.rank; });
+        for (const Late& l : all) {
+            if (l.outcome == Outcome::Conflict) {
+                const CollapseRecord& r = record(l.rank);
+                waiting_[r.active] = waiting_[r.latent] = 0;
+                ++stats.deferred_at_tile_borders;
+                std::uint32_t made = 0;
+                step(l.rank, merge_short, stats, made);
+            } else {
+                stats.improvement_flips += improve_around(mesh_, l.c2, options_);
+            }
+        }
+    }
+
+    void replay_tile(const std::vector<std::uint32_t>& ranks, std::uint32_t tile, bool merge_short,
+                     ReexpansionStats& stats, std::vector<Late>& late) {
+        SplitMesh::work_for(tile);
+        for (std::uint32_t rank : ranks) {
+            const CollapseRecord& r = record(rank);
+            Outcome outcome = Outcome::Conflict;
+            std::uint32_t made = 0;
+            if (!waiting_[r.active] && !waiting_[r.latent])
+                outcome = step(rank, merge_short, stats, made);
+            if (outcome == Outcome::Done) {
+                ++stats.replayed_in_tiles;
+                continue;
+            }
+            if (outcome == Outcome::Conflict) waiting_[r.active] = waiting_[r.latent] = 1;
+            late.push_back({rank, made, outcome});
+        }
+    }
+
+    Outcome replay(std::size_t rank, ReexpansionStats& stats, std::uint32_t& made) {
+        const CollapseRecord& r = record(rank);
+        // Stays valid while r.latent's entry changes: that is another word or list.
+        const NodeVertices::Span candidates = vertices_of_.of(r.active);
+        if (candidates.size == 0) { // the node never reached the mesh: its subtree is dropped
+            ++stats.skipped_no_vertex;
+            return Outcome::Done;
+        }
+        bool unresolved = false;
+        const std::size_t removed_before = stats.triangles_removed;
+        thread_local Star star; // reused: no allocation per split
+        std::uint32_t c = 0, c2 = 0;
+        SplitChoice choice;
+        try {
+            for (std::uint32_t copy : candidates) {
+                if (mesh_.isolated(copy)) continue;
+                const CrossingStats cs = resolve_crossings(mesh_, copy, r.active_before,
+                                                           r.latent_before, normals_[r.active]);
+                stats.crossing_flips += cs.flips;
+                stats.triangles_removed += cs.triangles_removed;
+                unresolved = unresolved || cs.unresolved > 0 || cs.round_limit;
+                mesh_.move(copy, r.active_before);
+            }
+            for (std::uint32_t copy : candidates) { // the first copy (in id order) with a pair
+                if (mesh_.isolated(copy)) continue;
+                mesh_.star(copy, star);
+                choice = choose_split(mesh_, copy, star, r.active_before, r.latent_before);
+                if (!choice.found) continue;
+                c = copy;
+                const std::size_t face = first_face_ + 2 * rank;
+                c2 = mesh_.split(c, star, choice.a, choice.b, r.latent_before, choice.omit,
+                                 {std::uint32_t(first_vertex_ + rank), {face, face + 1}});
+                break;
+            }
+        } catch (const TileConflict&) {
+            return Outcome::Conflict;
+        }
+        if (!choice.found) {
+            ++stats.failed_no_pair;
+            alias(r);
+            return Outcome::Done;
+        }
+        made = c2;
+        vertex_node_[VertexIndex(c2)] = PointIndex(r.latent);
+        vertices_of_.set(r.latent, c2);
+        alias_[PointIndex(r.latent)] = PointIndex(r.latent);
+        ++stats.replayed;
+        stats.border_splits += choice.omit != SplitMesh::BorderSplit::None;
+        if (unresolved) ++stats.unresolved_crossings;
+        Outcome outcome = Outcome::Done;
+        try {
+            stats.improvement_flips += improve_around(mesh_, c2, options_);
+        } catch (const TileConflict&) {
+            outcome = Outcome::ImproveLater; // the split stands; its flips wait
+        }
+        if (observer_)
+            observer_->split_done(mesh_, c, c2, r.active_before, r.latent_before,
+                                  stats.triangles_removed - removed_before, unresolved);
+        return outcome;
+    }
+
     const std::vector<Vec3>& points_;
     const std::vector<Vec3>& normals_;
+    const std::vector<CollapseRecord>& records_;
     const ReexpandOptions& options_;
+    double l_min_;
     ReexpansionObserver* observer_;
     SplitMesh mesh_;
     NodeVertices vertices_of_;
-    IndexVector<VertexIndex, PointIndex> vertex_node_;
+    IndexVector<VertexIndex, PointIndex> vertex_node_; ///< per vertex slot (kNoNode: unused)
     IndexVector<PointIndex, PointIndex> alias_;
-    Star star_;
+    std::size_t first_vertex_, first_face_; ///< the slots of rank 0
+    collapsing::Tiles tiles_;               ///< D-42's tiles of the spatial order
+    std::vector<std::uint8_t> waiting_;     ///< per node: a record of it waits (D-43)
 };
 
 } // namespace
@@ -184,35 +374,32 @@ private:
 ReexpandedMesh replay_collapses(ReexpansionInput input, const Execution& exec,
                                 ReexpansionStats& stats, ReexpansionObserver* observer) {
     const ReexpandOptions& options = input.options;
-    const double l_min = input.l_min;
-    std::vector<CollapseRecord>& records = input.records;
     validate(options);
-    stats.records = records.size();
+    stats.records = input.records.size();
     Replayer replayer(input, observer);
     stats.border_slivers_peeled = replayer.peel_border_slivers();
+    stats.tiles = collapsing::Tiles(input.points.size()).count;
+    // An observer reads the whole mesh after each split: one thread, the same tiles.
+    const Execution replay_exec{observer ? 1 : exec.threads, exec.progress};
     if (exec.progress) exec.progress->begin("re-expansion");
-    for (std::size_t k = records.size(); k-- > 0;) {
-        const CollapseRecord& r = records[k];
-        if (exec.progress && (k & 0x3ff) == 0) // often enough to cancel promptly
-            exec.progress->update(double(records.size() - k) / double(records.size()));
-        if (l_min > 0 && (r.active_before - r.latent_before).Norm() < l_min) {
-            if (options.l_min_mode == LMinMode::Stop) {
-                stats.stopped_at_l_min = true;
-                // Everything not yet replayed stays merged into its surviving node.
-                for (std::size_t rest = k + 1; rest-- > 0;) {
-                    replayer.alias(records[rest]);
-                    ++stats.merged_by_l_min;
-                }
+    const std::size_t n = replayer.records();
+    std::size_t end = n;
+    if (options.l_min_mode == LMinMode::Stop)
+        for (std::size_t rank = 0; rank < n; ++rank)
+            if (replayer.short_record(rank)) {
+                end = rank;
                 break;
             }
-            replayer.alias(r);
+    replayer.replay_range(0, end, options.l_min_mode != LMinMode::Stop, replay_exec, stats);
+    if (end < n) { // everything not yet replayed stays merged into its surviving node
+        stats.stopped_at_l_min = true;
+        for (std::size_t rank = end; rank < n; ++rank) {
+            replayer.alias(replayer.record(rank));
             ++stats.merged_by_l_min;
-            continue;
         }
-        replayer.replay(r, stats);
     }
     replayer.snap_to_input();
-    std::vector<CollapseRecord>().swap(records); // spent: free them before the export
+    std::vector<CollapseRecord>().swap(input.records); // spent: free them before the export
     return replayer.take_result();
 }
 

@@ -61,7 +61,8 @@ bool face_consistent(const SFace* f) {
 } // namespace
 
 #ifdef HRSR_EXPENSIVE_CHECKS
-#define HRSR_CHECK_AROUND(v, what) check_around(v, what)
+// Not while guarded (D-43): the check reads faces beyond what a tile may.
+#define HRSR_CHECK_AROUND(v, what) (guarded_ ? (void)0 : check_around(v, what))
 #else
 #define HRSR_CHECK_AROUND(v, what) ((void)(v))
 #endif
@@ -154,6 +155,7 @@ void SplitMesh::star(std::uint32_t vi, Star& s) const {
     s.neighbours.clear();
     s.wedges.clear();
     s.boundary = false;
+    claim(vi);
     SFace* start = face_of_[vi];
     if (start == nullptr) return;
     const SVertex* v = &mesh_.vert[vi];
@@ -195,6 +197,40 @@ void SplitMesh::star(std::uint32_t vi, Star& s) const {
 
 std::uint32_t SplitMesh::split(std::uint32_t ci, const Star& s, std::uint32_t ai, std::uint32_t bi,
                                const Vec3& position, BorderSplit omit) {
+    if (mesh_.vert.size() == mesh_.vert.capacity() || mesh_.face.size() + 2 > mesh_.face.capacity())
+        throw std::logic_error("split mesh: capacity exhausted");
+    claim(ci);
+    claim(s);
+    SVertex* c2 = &*vcg::tri::Allocator<SMesh>::AddVertices(mesh_, 1);
+    c2->P() = position;
+    auto fn = vcg::tri::Allocator<SMesh>::AddFaces(mesh_, omit == BorderSplit::None ? 2 : 1);
+    mesh_.fn -= omit == BorderSplit::None ? 2 : 1; // counted by split_into
+    SFace* first = &*fn;
+    return split_into(ci, s, ai, bi, omit,
+                      {c2, first, omit == BorderSplit::None ? first + 1 : first});
+}
+
+std::uint32_t SplitMesh::split(std::uint32_t ci, const Star& s, std::uint32_t ai, std::uint32_t bi,
+                               const Vec3& position, BorderSplit omit, const Slots& slots) {
+    claim(ci);
+    claim(s);
+    if (slots.vertex >= mesh_.vert.size() || slots.faces[0] >= mesh_.face.size() ||
+        slots.faces[1] >= mesh_.face.size() || !isolated(slots.vertex))
+        throw std::logic_error("split mesh: a split into slots that are not free");
+    SVertex* c2 = &mesh_.vert[slots.vertex];
+    c2->P() = position;
+    SFace* first = &mesh_.face[slots.faces[0]];
+    SFace* second = &mesh_.face[slots.faces[1]];
+    for (SFace* f : {first, second}) f->ClearD();
+    if (omit != BorderSplit::None) second->SetD(); // one triangle: the second slot stays unused
+    return split_into(ci, s, ai, bi, omit, {c2, first, omit == BorderSplit::None ? second : first});
+}
+
+// The split itself, with c' and the faces for (c', c, b) and (c, c', a) given (the same face
+// when only one of them is made). Everything it touches was claimed by the caller.
+std::uint32_t SplitMesh::split_into(std::uint32_t ci, const Star& s, std::uint32_t ai,
+                                    std::uint32_t bi, BorderSplit omit, const Made& made) {
+    SVertex* c2 = made.c2;
     const std::size_t d = s.neighbours.size();
     const std::size_t i =
         std::find(s.neighbours.begin(), s.neighbours.end(), ai) - s.neighbours.begin();
@@ -202,8 +238,6 @@ std::uint32_t SplitMesh::split(std::uint32_t ci, const Star& s, std::uint32_t ai
         std::find(s.neighbours.begin(), s.neighbours.end(), bi) - s.neighbours.begin();
     if (i == d || j == d || i == j)
         throw std::logic_error("split mesh: a and b must be distinct neighbours");
-    if (mesh_.vert.size() == mesh_.vert.capacity() || mesh_.face.size() + 2 > mesh_.face.capacity())
-        throw std::logic_error("split mesh: capacity exhausted");
 
     SVertex* c = &mesh_.vert[ci];
     // Faces in the sweep b → a (wedges j … i−1) move to c'. The faces next to the spokes:
@@ -213,9 +247,6 @@ std::uint32_t SplitMesh::split(std::uint32_t ci, const Star& s, std::uint32_t ai
     SFace* keep_a = s.wedges[i];               // wedge after a: stays
     if ((omit == BorderSplit::Out && keep_b) || (omit == BorderSplit::In && keep_a))
         throw std::logic_error("split mesh: a border split leaves out a triangle next to the gap");
-    auto vn = vcg::tri::Allocator<SMesh>::AddVertices(mesh_, 1);
-    SVertex* c2 = &*vn;
-    c2->P() = position;
     const std::uint32_t c2i = index(c2);
     const int keep_b_edge = keep_b ? edge_of(keep_b, c, &mesh_.vert[bi]) : -1;
     const int move_b_edge = move_b ? edge_of(move_b, c, &mesh_.vert[bi]) : -1;
@@ -224,9 +255,9 @@ std::uint32_t SplitMesh::split(std::uint32_t ci, const Star& s, std::uint32_t ai
     for (std::size_t w = j; w != i; w = (w + 1) % d)
         if (SFace* f = s.wedges[w]) f->V(corner_of(f, c)) = c2;
 
-    auto fn = vcg::tri::Allocator<SMesh>::AddFaces(mesh_, omit == BorderSplit::None ? 2 : 1);
-    SFace* t_out = omit == BorderSplit::Out ? nullptr : &*fn;                      // (c', c, b)
-    SFace* t_in = omit == BorderSplit::In ? nullptr : (t_out ? &*(fn + 1) : &*fn); // (c, c', a)
+    SFace* t_out = omit == BorderSplit::Out ? nullptr : made.first; // (c', c, b)
+    SFace* t_in =
+        omit == BorderSplit::In ? nullptr : (t_out ? made.second : made.first); // (c, c', a)
     if (t_out) {
         t_out->V(0) = c2, t_out->V(1) = c, t_out->V(2) = &mesh_.vert[bi];
         attach(t_out, 1, keep_b, keep_b_edge); // {c, b}
@@ -240,8 +271,34 @@ std::uint32_t SplitMesh::split(std::uint32_t ci, const Star& s, std::uint32_t ai
     link(t_in, 1, move_a, move_a_edge);  // {c', a}
     if (t_out) set_face_of(t_out);
     if (t_in) set_face_of(t_in);
+    count_faces(omit == BorderSplit::None ? 2 : 1);
     for (std::uint32_t x : {ci, c2i, ai, bi}) HRSR_CHECK_AROUND(x, "a split");
     return c2i;
+}
+
+void SplitMesh::add_slots(std::size_t vertices, std::size_t faces) {
+    if (mesh_.vert.size() + vertices > mesh_.vert.capacity() ||
+        mesh_.face.size() + faces > mesh_.face.capacity())
+        throw std::logic_error("split mesh: capacity exhausted");
+    if (vertices > 0) vcg::tri::Allocator<SMesh>::AddVertices(mesh_, vertices);
+    if (faces == 0) return;
+    auto f = vcg::tri::Allocator<SMesh>::AddFaces(mesh_, faces);
+    for (std::size_t k = 0; k < faces; ++k, ++f) f->SetD();
+    mesh_.fn -= int(faces);
+}
+
+void SplitMesh::guard(bool on) {
+    if (on && owner_.size() < mesh_.vert.size())
+        throw std::logic_error("split mesh: a guard without an owner for every vertex");
+    guarded_ = on;
+    if (!on) mesh_.fn += int(guarded_face_change_.exchange(0));
+}
+
+void SplitMesh::count_faces(int change) {
+    if (guarded_)
+        guarded_face_change_.fetch_add(change, std::memory_order_relaxed);
+    else
+        mesh_.fn += change;
 }
 
 std::size_t SplitMesh::border_loop_edges(std::uint32_t v, std::size_t limit) const {
@@ -266,6 +323,7 @@ std::size_t SplitMesh::border_loop_edges(std::uint32_t v, std::size_t limit) con
 
 template <class Visit>
 void SplitMesh::for_each_face_any_order(std::uint32_t vi, Visit&& visit) const {
+    claim(vi);
     SFace* start = face_of_[vi];
     if (start == nullptr) return;
     const SVertex* v = &mesh_.vert[vi];
@@ -335,7 +393,10 @@ bool SplitMesh::adjacent(std::uint32_t u, std::uint32_t w) const {
 }
 
 bool SplitMesh::can_flip(SFace* f, int z) const {
-    if (is_border(f, z) || !vcg::face::CheckFlipEdge(*f, z)) return false;
+    claim_face(f);
+    if (is_border(f, z)) return false;
+    claim(vertex_of(f->FFp(z), (f->FFi(z) + 2) % 3));
+    if (!vcg::face::CheckFlipEdge(*f, z)) return false;
     // The new diagonal must not exist yet. vcg's CheckFlipEdge looks for it by circulating with
     // Pos::NextE, which on a boundary vertex bounces at the border and comes back before seeing
     // the faces on the far side of its start: it can miss the edge (seen on the bunny scans).
@@ -347,7 +408,9 @@ bool SplitMesh::can_flip(SFace* f, int z) const {
 }
 
 void SplitMesh::flip(SFace* f, int z) {
+    claim_face(f);
     SFace* g = f->FFp(z);
+    claim_face(g);
     vcg::face::FlipEdge(*f, z);
     set_face_of(f);
     set_face_of(g);
@@ -358,6 +421,7 @@ void SplitMesh::flip(SFace* f, int z) {
 }
 
 void SplitMesh::remove_face(SFace* f) {
+    claim_face(f);
     SFace* across[3];
     for (int z = 0; z < 3; ++z) across[z] = is_border(f, z) ? nullptr : f->FFp(z);
     for (int z = 0; z < 3; ++z)
@@ -368,7 +432,8 @@ void SplitMesh::remove_face(SFace* f) {
         const std::uint32_t v = index(f->V(k));
         if (face_of_[v] == f) face_of_[v] = across[k] ? across[k] : across[(k + 2) % 3];
     }
-    vcg::tri::Allocator<SMesh>::DeleteFace(mesh_, *f);
+    f->SetD();
+    count_faces(-1);
     for (int k = 0; k < 3; ++k) HRSR_CHECK_AROUND(index(f->V(k)), "a face removal");
 }
 

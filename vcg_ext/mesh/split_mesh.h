@@ -9,6 +9,7 @@
 #include <vcg/complex/complex.h>
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -35,6 +36,10 @@ struct Star {
     bool boundary = false;
 };
 
+/// D-43: what a guarded mesh throws when work for one tile reaches a vertex of another, before
+/// anything is changed.
+struct TileConflict {};
+
 class SplitMesh {
 public:
     /// A manifold, consistently oriented mesh; room for `vertex_capacity` vertices and
@@ -46,9 +51,46 @@ public:
 
     std::size_t vertex_count() const { return mesh_.vert.size(); }
     std::size_t face_count() const { return std::size_t(mesh_.fn); }
-    Vec3 position(std::uint32_t v) const { return mesh_.vert[v].P(); }
-    void move(std::uint32_t v, const Vec3& p) { mesh_.vert[v].P() = p; }
-    bool isolated(std::uint32_t v) const { return face_of_[v] == nullptr; }
+    Vec3 position(std::uint32_t v) const {
+        claim(v);
+        return mesh_.vert[v].P();
+    }
+    void move(std::uint32_t v, const Vec3& p) {
+        claim(v);
+        mesh_.vert[v].P() = p;
+    }
+    bool isolated(std::uint32_t v) const {
+        claim(v);
+        return face_of_[v] == nullptr;
+    }
+
+    /// D-43: work on tiles of vertices in parallel. `owner` gives every vertex slot its tile.
+    /// While guarded, a thread that works for tile t (work_for) reads and changes only vertices
+    /// of t and faces with a vertex of t, and changes only faces whose vertices are all of t:
+    /// reaching another tile's vertex throws TileConflict before anything changes. A face with
+    /// vertices of two tiles then stays as it is, so each tile's work depends on its own
+    /// vertices alone, whatever the other threads do.
+    void set_owners(std::vector<std::uint32_t> owner) { owner_ = std::move(owner); }
+    /// Between guarded stretches the caller must join its threads.
+    void guard(bool on);
+    static void work_for(std::uint32_t tile) { working_tile_ = tile; }
+    void claim(std::uint32_t v) const {
+        if (guarded_ && owner_[v] != working_tile_) throw TileConflict{};
+    }
+    /// Claims a star's neighbours (its centre was claimed by star()).
+    void claim(const Star& s) const {
+        if (guarded_)
+            for (std::uint32_t v : s.neighbours) claim(v);
+    }
+
+    /// D-43: `vertices` more (isolated) vertices and `faces` more face slots (unused), for
+    /// split()s at given slots: concurrent splits must not allocate.
+    void add_slots(std::size_t vertices, std::size_t faces);
+    /// Where a split puts c' and its one or two new triangles (slots from add_slots).
+    struct Slots {
+        std::uint32_t vertex;
+        std::size_t faces[2];
+    };
 
     /// Neighbours in counter-clockwise order starting at the smallest id (D-10); empty if isolated.
     Star star(std::uint32_t v) const {
@@ -79,6 +121,9 @@ public:
     enum class BorderSplit { None, Out, In };
     std::uint32_t split(std::uint32_t c, const Star& s, std::uint32_t a, std::uint32_t b,
                         const Vec3& position, BorderSplit omit);
+    /// The same into given slots (c' is slots.vertex, the triangles take the face slots in order).
+    std::uint32_t split(std::uint32_t c, const Star& s, std::uint32_t a, std::uint32_t b,
+                        const Vec3& position, BorderSplit omit, const Slots& slots);
 
     /// The number of edges of the border loop through v (a border vertex with one gap), when
     /// it is at most `limit`; limit + 1 otherwise (also for a vertex on several loops).
@@ -120,6 +165,19 @@ private:
     void link_faces(std::size_t vertex_count, const std::vector<Triangle>& triangles);
     [[noreturn]] static void throw_not_manifold();
     void set_face_of(SFace* f);
+    /// c' and the faces for (c', c, b) and (c, c', a): the same face when one is made.
+    struct Made {
+        SVertex* c2;
+        SFace *first, *second;
+    };
+    std::uint32_t split_into(std::uint32_t c, const Star& s, std::uint32_t a, std::uint32_t b,
+                             BorderSplit omit, const Made& made);
+    /// Faces added (+) or removed (−): vcglib's count directly when unguarded, else summed
+    /// atomically and added when the guard ends.
+    void count_faces(int change);
+    void claim_face(const SFace* f) const {
+        for (int k = 0; k < 3; ++k) claim(vertex_of(f, k));
+    }
     /// Whether v is an interior vertex with at most three edges, walking no more than four of
     /// its faces (most vertices have more).
     bool interior_with_three_edges(std::uint32_t v) const;
@@ -129,7 +187,11 @@ private:
     void for_each_face_any_order(std::uint32_t v, Visit&& visit) const;
 
     SMesh mesh_;
-    std::vector<SFace*> face_of_; ///< per vertex: one incident face (null if isolated)
+    std::vector<SFace*> face_of_;      ///< per vertex: one incident face (null if isolated)
+    std::vector<std::uint32_t> owner_; ///< per vertex slot: its tile (D-43)
+    bool guarded_ = false;
+    std::atomic<long> guarded_face_change_{0};
+    inline static thread_local std::uint32_t working_tile_ = 0;
 };
 
 } // namespace hrsr
