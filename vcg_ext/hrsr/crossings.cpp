@@ -75,6 +75,7 @@ bool has_crossing(const SplitMesh& m, std::uint32_t c, const Vec3& x_a, const Ve
     thread_local Star s;
     thread_local std::vector<Link> fan;
     m.star(c, s);
+    m.claim(s); // D-43: the links of the rim edges are read below
     const TangentFrame f = plane_at(m, c, s, normal);
     links(m, c, s, fan);
     for (const Link& l : fan)
@@ -98,6 +99,7 @@ CrossingStats resolve_crossings(SplitMesh& m, std::uint32_t c, const Vec3& x_a, 
             break;
         }
         m.star(c, s);
+        m.claim(s); // D-43: the links of the rim edges are read below
         const TangentFrame f = plane_at(m, c, s, normal);
         links(m, c, s, fan);
         bool changed = false;

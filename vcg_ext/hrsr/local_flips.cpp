@@ -86,6 +86,7 @@ std::size_t improve_around(SplitMesh& m, std::uint32_t v, const ReexpandOptions&
     circle.clear();
     two_ring.clear();
     m.star(v, s);
+    m.claim(s); // D-43: the faces across the rim are read below
     const std::size_t d = s.neighbours.size();
     for (std::size_t k = 0; k < d; ++k) {
         SFace* f = s.wedges[k]; // (v, q_k, q_k+1): holds v→q_k and q_k→q_k+1

@@ -119,7 +119,8 @@ public:
           vertices_of_(input.points.size(), input.coarse.vertex_node),
           vertex_node_(input.coarse.vertex_node), first_vertex_(input.coarse.positions.size()),
           first_face_(input.coarse.triangles.size()), tiles_(input.points.size()),
-          waiting_(input.points.size(), 0) {
+          waiting_(input.points.size(), 0),
+          waiting_vertex_(input.coarse.positions.size() + input.records.size(), 0) {
         mesh_.add_slots(records_.size(), 2 * records_.size());
         vertex_node_.resize(first_vertex_ + records_.size(), ReexpandedMesh::kNoNode);
         alias_ = IndexVector<PointIndex, PointIndex>(input.points.size(), ReexpandedMesh::kNoNode);
@@ -210,6 +211,10 @@ private:
         std::uint32_t c2; ///< ImproveLater: the vertex the split made; Conflict: unused
         Outcome outcome;
     };
+    struct TileLate {
+        std::vector<Late> records;
+        std::vector<std::uint32_t> vertices; ///< marked waiting
+    };
 
     bool inside_tile(std::size_t rank) const {
         const CollapseRecord& r = record(rank);
@@ -229,8 +234,8 @@ private:
 
     // D-43: ranks [begin, end) all inside tiles; each tile's records in order by one thread,
     // the mesh guarded. A record whose work reaches another tile's vertex stops before it changes
-    // anything there and waits, with every later record of its nodes, until the threads are
-    // done; then the waiting records are replayed in order.
+    // anything there and waits, with every later record of its nodes or of their vertices, until
+    // the threads are done; then the waiting records are replayed in order.
     void replay_in_tiles(std::size_t begin, std::size_t end, bool merge_short,
                          const Execution& exec, ReexpansionStats& stats) {
         std::vector<std::vector<std::uint32_t>> by_tile(tiles_.count);
@@ -240,8 +245,15 @@ private:
         for (std::uint32_t t = 0; t < by_tile.size(); ++t)
             if (!by_tile[t].empty()) busy.push_back(t);
         std::vector<ReexpansionStats> tile_stats(busy.size());
-        std::vector<std::vector<Late>> late(busy.size());
-        const Execution threads{exec.threads, nullptr};
+        std::vector<TileLate> late(busy.size());
+        // Progress of the stretch as progress of the phase, from the calling thread; a cancel
+        // stops the loop.
+        Progress stretch([&](const std::string&, double fraction) {
+            exec.progress->update((double(begin) + fraction * double(end - begin)) /
+                                  double(records_.size()));
+            return true;
+        });
+        const Execution threads{exec.threads, exec.progress ? &stretch : nullptr};
         mesh_.guard(true);
         try {
             parallel_for(
@@ -258,14 +270,15 @@ private:
         std::vector<Late> all;
         for (std::size_t i = 0; i < busy.size(); ++i) {
             add(stats, tile_stats[i]);
-            all.insert(all.end(), late[i].begin(), late[i].end());
+            all.insert(all.end(), late[i].records.begin(), late[i].records.end());
+            for (std::uint32_t v : late[i].vertices) waiting_vertex_[v] = 0;
         }
+        for (const Late& l : all)
+            waiting_[record(l.rank).active] = waiting_[record(l.rank).latent] = 0;
         std::sort(all.begin(), all.end(),
                   [](const Late& a, const Late& b) { return a.rank < b.rank; });
         for (const Late& l : all) {
             if (l.outcome == Outcome::Conflict) {
-                const CollapseRecord& r = record(l.rank);
-                waiting_[r.active] = waiting_[r.latent] = 0;
                 ++stats.deferred_at_tile_borders;
                 std::uint32_t made = 0;
                 step(l.rank, merge_short, stats, made);
@@ -275,21 +288,36 @@ private:
         }
     }
 
+    // Whether record r must wait: a record of its nodes or of their vertices waits, or its
+    // vertices are another tile's (it would stop there anyway).
+    bool must_wait(const CollapseRecord& r) const {
+        if (waiting_[r.active] || waiting_[r.latent]) return true;
+        for (std::uint32_t v : vertices_of_.of(r.active))
+            if (!mesh_.owns(v) || waiting_vertex_[v]) return true;
+        return false;
+    }
+
     void replay_tile(const std::vector<std::uint32_t>& ranks, std::uint32_t tile, bool merge_short,
-                     ReexpansionStats& stats, std::vector<Late>& late) {
+                     ReexpansionStats& stats, TileLate& late) {
         SplitMesh::work_for(tile);
         for (std::uint32_t rank : ranks) {
             const CollapseRecord& r = record(rank);
             Outcome outcome = Outcome::Conflict;
             std::uint32_t made = 0;
-            if (!waiting_[r.active] && !waiting_[r.latent])
-                outcome = step(rank, merge_short, stats, made);
+            if (!must_wait(r)) outcome = step(rank, merge_short, stats, made);
             if (outcome == Outcome::Done) {
                 ++stats.replayed_in_tiles;
                 continue;
             }
-            if (outcome == Outcome::Conflict) waiting_[r.active] = waiting_[r.latent] = 1;
-            late.push_back({rank, made, outcome});
+            if (outcome == Outcome::Conflict) {
+                waiting_[r.active] = waiting_[r.latent] = 1;
+                for (std::uint32_t v : vertices_of_.of(r.active))
+                    if (mesh_.owns(v)) {
+                        waiting_vertex_[v] = 1;
+                        late.vertices.push_back(v);
+                    }
+            }
+            late.records.push_back({rank, made, outcome});
         }
     }
 
@@ -348,9 +376,13 @@ private:
         } catch (const TileConflict&) {
             outcome = Outcome::ImproveLater; // the split stands; its flips wait
         }
-        if (observer_)
+        if (observer_) { // one thread (replay_collapses): the observer may read the whole mesh
+            const bool guarded = mesh_.guarded();
+            mesh_.guard(false);
             observer_->split_done(mesh_, c, c2, r.active_before, r.latent_before,
                                   stats.triangles_removed - removed_before, unresolved);
+            mesh_.guard(guarded);
+        }
         return outcome;
     }
 
@@ -364,9 +396,10 @@ private:
     NodeVertices vertices_of_;
     IndexVector<VertexIndex, PointIndex> vertex_node_; ///< per vertex slot (kNoNode: unused)
     IndexVector<PointIndex, PointIndex> alias_;
-    std::size_t first_vertex_, first_face_; ///< the slots of rank 0
-    collapsing::Tiles tiles_;               ///< D-42's tiles of the spatial order
-    std::vector<std::uint8_t> waiting_;     ///< per node: a record of it waits (D-43)
+    std::size_t first_vertex_, first_face_;    ///< the slots of rank 0
+    collapsing::Tiles tiles_;                  ///< D-42's tiles of the spatial order
+    std::vector<std::uint8_t> waiting_;        ///< per node: a record of it waits (D-43)
+    std::vector<std::uint8_t> waiting_vertex_; ///< per vertex slot: a record of it waits
 };
 
 } // namespace

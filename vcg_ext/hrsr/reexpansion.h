@@ -30,7 +30,8 @@ public:
     virtual ~ReexpansionObserver() = default;
     /// c was made room for (crossings resolved: `unresolved` left) and moved to x_a; the split
     /// created c2 at x_b. `removed` boundary triangles were removed for it (each changes
-    /// (V, E, F) by (0, −1, −1)); the local flips have run.
+    /// (V, E, F) by (0, −1, −1)); the local flips have run (D-43: or wait, when they reached
+    /// another tile).
     virtual void split_done(const SplitMesh& /*mesh*/, std::uint32_t /*c*/, std::uint32_t /*c2*/,
                             const Vec3& /*x_a*/, const Vec3& /*x_b*/, std::size_t /*removed*/,
                             bool /*unresolved*/) {}

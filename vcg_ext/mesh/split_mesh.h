@@ -65,17 +65,22 @@ public:
     }
 
     /// D-43: work on tiles of vertices in parallel. `owner` gives every vertex slot its tile.
-    /// While guarded, a thread that works for tile t (work_for) reads and changes only vertices
-    /// of t and faces with a vertex of t, and changes only faces whose vertices are all of t:
-    /// reaching another tile's vertex throws TileConflict before anything changes. A face with
-    /// vertices of two tiles then stays as it is, so each tile's work depends on its own
-    /// vertices alone, whatever the other threads do.
+    /// While guarded, a thread that works for tile t (work_for) reads only t's vertices, the
+    /// corners of faces around them and the links (FF) of edges with an end of t, and changes
+    /// only faces whose three vertices are t's, so only links of edges with both ends of t:
+    /// reaching another tile's vertex throws TileConflict before anything changes. The corners of
+    /// a face across tiles and the links of edges across tiles then stay as they are, so each
+    /// tile's work depends on its own vertices alone, whatever the other threads do. Code that
+    /// reads the link across a star's rim edge must claim the star's neighbours first.
     void set_owners(std::vector<std::uint32_t> owner) { owner_ = std::move(owner); }
     /// Between guarded stretches the caller must join its threads.
     void guard(bool on);
+    bool guarded() const { return guarded_; }
     static void work_for(std::uint32_t tile) { working_tile_ = tile; }
+    /// Whether the current thread may touch v (always, unguarded).
+    bool owns(std::uint32_t v) const { return !guarded_ || owner_[v] == working_tile_; }
     void claim(std::uint32_t v) const {
-        if (guarded_ && owner_[v] != working_tile_) throw TileConflict{};
+        if (!owns(v)) throw TileConflict{};
     }
     /// Claims a star's neighbours (its centre was claimed by star()).
     void claim(const Star& s) const {
