@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <ctime>
 #include <map>
 #include <new>
@@ -172,6 +173,42 @@ TEST(Faults, CancelDuringAParallelLoopStopsIt) {
                  Cancelled);
     EXPECT_TRUE(reported);
     EXPECT_LT(done.load(), 1000000u);
+}
+
+// D-43: a cloud of three tiles replays most of its records by tile in parallel; progress is
+// still reported from the calling thread while the tiles run, a cancel there stops the
+// replay, and a run after it gives the same mesh as before.
+TEST(Faults, CancelWhileTheTilesReplayStopsThem) {
+    const PointSet in = testing::sample_torus(150000, 1.0, 0.3, testing::Density::Graded);
+    const Attempt reference = attempt(in, Method::Hrsr, {}, {2, nullptr});
+    ASSERT_EQ(reference.kind, Attempt::Mesh) << reference.message;
+    ASSERT_GT(reference.report.reexpansion.replayed_in_tiles,
+              reference.report.reexpansion.records / 2);
+    std::vector<double> fractions;
+    Progress counting([&](const std::string& phase, double fraction) {
+        if (phase == "re-expansion") fractions.push_back(fraction);
+        return true;
+    });
+    ASSERT_EQ(attempt(in, Method::Hrsr, {}, {2, &counting}).kind, Attempt::Mesh);
+    // Calls all through the phase, never going back.
+    ASSERT_GE(fractions.size(), 20u);
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+    EXPECT_GT(fractions.back(), 0.9);
+    int calls = 0, after = 0;
+    Progress cancelling([&](const std::string& phase, double fraction) {
+        if (calls < 0) {
+            ++after;
+            return true;
+        }
+        if (phase != "re-expansion" || fraction < 0.5) return true;
+        calls = -1;
+        return false;
+    });
+    const Attempt cancelled = attempt(in, Method::Hrsr, {}, {2, &cancelling});
+    testing::expect_error(cancelled, Attempt::Cancel, "cancelled", "re-expansion in tiles");
+    EXPECT_EQ(after, 0);
+    EXPECT_TRUE(testing::same_connectivity(attempt(in, Method::Hrsr, {}, {2, nullptr}).mesh,
+                                           reference.mesh));
 }
 
 // Prompt cancellation: on a cloud where a run takes seconds, no stretch without a progress call
