@@ -99,6 +99,15 @@ nlohmann::json fold_repair_json(const ReconstructionReport& r) {
             {"intersecting_pairs_left", r.fold_removal.pairs_after}};
 }
 
+// D-42, D-43: the tiles' work and how evenly it was spread (wall-clock, so it varies by run).
+nlohmann::json tile_times_json(const TileTimes& t) {
+    return {{"tiles", t.tiles},
+            {"stretches", t.stretches},
+            {"work_seconds", t.work},
+            {"slowest_tile_seconds", t.slowest},
+            {"balance", t.balance()}};
+}
+
 // The collapse and the re-expansion (§6–§8), and D-30 / D-34 on their mesh.
 nlohmann::json hrsr_json(const ReconstructionReport& r) {
     const ReexpansionStats& e = r.reexpansion;
@@ -120,7 +129,10 @@ nlohmann::json hrsr_json(const ReconstructionReport& r) {
             {"stopped_at_l_min", e.stopped_at_l_min},
             {"tiles", e.tiles},
             {"records_replayed_in_tiles", e.replayed_in_tiles},
-            {"records_deferred_at_tile_borders", e.deferred_at_tile_borders}};
+            {"records_deferred_at_tile_borders", e.deferred_at_tile_borders},
+            {"tile_times",
+             {{"collapse", tile_times_json(r.collapse_tile_times)},
+              {"re-expansion", tile_times_json(e.tile_times)}}}};
 }
 
 nlohmann::json report_json(const ReconstructArguments& a, const ReconstructionReport& r) {

@@ -4,7 +4,9 @@
 # time of every phase, the growth per × 4 points, and quality (r_v, boundary edges, pieces, points
 # dropped in folds). Samples are made here from ../shared/data/meshes/dragon_vrip.ply (bench_points
 # sample: uniform by area, in random order, each with its triangle's normal) and kept in OUT for
-# reruns. Per-tile balance is reported once the reconstruction runs in tiles (issue 20 item 2).
+# reruns. Per-tile balance (D-42, D-43): for the collapse and the re-expansion, the slowest tile
+# over the mean tile, summed over the stretches that end together, and the seconds a phase's tile
+# work would take on as many cores as tiles (the slowest tiles) against its total work.
 # Usage: bench/scaling.sh [--sizes 200000,800000,3200000,10000000] [--with-20m] [--threads 1,2]
 #                         [--hrsr BIN] [--out DIR] [--build DIR]
 # (a benchmark, not a test: about 45 min on 2 cores with 10M, 10 min without)
@@ -57,6 +59,14 @@ for n in sizes:
             seconds, kb = open(base + ".time").read().split()
             runs[n, t] = (json.load(open(base + ".json")), float(seconds), int(kb) * 1024)
 
+def balance(r):
+    t = r.get("hrsr", {}).get("tile_times")
+    if not t or t["collapse"]["tiles"] < 2:
+        return "one tile"
+    return ", ".join(f"{name} {t[key]['balance']:.2f} ({t[key]['slowest_tile_seconds']:.1f} of"
+                     f" {t[key]['work_seconds']:.1f} s)" for name, key in
+                     (("collapse", "collapse"), ("re-expansion", "re-expansion")))
+
 def label(n):
     return f"{n / 1e6:g}M" if n >= 1_000_000 else f"{n // 1000}k"
 
@@ -68,7 +78,7 @@ for (n, t), (r, seconds, peak) in sorted(runs.items()):
     above = (peak - 48 * n) / n / 1024
     print(f"| {label(n)} | {t} | {seconds:.1f} | {peak / 2**20:,.0f} | {above:.2f} |"
           f" {100 * p['vertex_reference_ratio']:.3f} % | {m['boundary_edges']:,} | {m['components']}"
-          f" | {p['dropped']['fold']:,} | – (no tiles yet) |")
+          f" | {p['dropped']['fold']:,} | {balance(r)} |")
 for t in threads:
     have = [n for n in sizes if (n, t) in runs]
     if not have:

@@ -462,6 +462,7 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
         collapsed = collapse(geometry, geometry_normals, collapse_options, exec);
     }
     report.coarse_points = collapsed.survivors.size();
+    report.collapse_tile_times = collapsed.tile_times;
     std::vector<PointIndex> dropped_nodes;
     PreparedCloud coarse;
     {

@@ -63,6 +63,7 @@ struct ReconstructionReport {
         0; ///< input points represented by another point's vertex (l_min, failed splits)
     std::vector<std::uint32_t> dropped_small_coarse_component; ///< input indices
     double l_min = 0;                                          ///< in input units
+    TileTimes collapse_tile_times;                             ///< D-42
     ReexpansionStats reexpansion;
 };
 

@@ -36,6 +36,33 @@ struct FlatFaceStats {
     std::size_t left = 0;    ///< neither possible (runs of four collinear points)
 };
 
+/// D-42, D-43: how evenly the tiles' work was spread. Tiles run in stretches (a collapse step,
+/// a stretch of records inside tiles) that end together, so a stretch lasts as long as its
+/// slowest tile: on many cores the phase's tile work takes about `slowest` seconds, on one
+/// `work`. Wall-clock times, so they vary from run to run (the result does not).
+struct TileTimes {
+    std::size_t tiles = 1;
+    std::size_t stretches = 0;
+    double work = 0;    ///< seconds, all tiles of all stretches
+    double slowest = 0; ///< seconds, the slowest tile of each stretch, summed
+    double mean = 0;    ///< seconds, the mean tile of each stretch (over its busy tiles), summed
+    /// Adds one stretch's per-tile seconds.
+    void add_stretch(const double* seconds, std::size_t busy) {
+        if (busy == 0) return;
+        double sum = 0, most = 0;
+        for (std::size_t i = 0; i < busy; ++i) {
+            sum += seconds[i];
+            most = seconds[i] > most ? seconds[i] : most;
+        }
+        ++stretches;
+        work += sum;
+        slowest += most;
+        mean += sum / double(busy);
+    }
+    /// Slowest over mean tile, summed over stretches (1: perfectly even; 0 without tiles).
+    double balance() const { return mean > 0 ? slowest / mean : 0; }
+};
+
 /// HRsR's re-expansion (hrsr/reexpansion.h, ALGORITHM.md §8).
 struct ReexpansionStats {
     std::size_t records = 0;           ///< collapse records available
@@ -50,6 +77,7 @@ struct ReexpansionStats {
     std::size_t tiles = 1;                 ///< D-43: tiles replayed in parallel
     std::size_t replayed_in_tiles = 0;     ///< D-43: records replayed by their tile's thread
     std::size_t deferred_at_tile_borders = 0; ///< D-43: reached another tile: replayed after
+    TileTimes tile_times;                     ///< D-43
     bool stopped_at_l_min = false;
 };
 

@@ -200,6 +200,14 @@ TEST(Hrsr, TiledCloudGivesTheSameMeshForAnyThreadCount) {
         EXPECT_EQ(report.reexpansion.tiles, 3u);
         EXPECT_GT(report.reexpansion.replayed_in_tiles, report.reexpansion.records / 2);
         EXPECT_GT(report.reexpansion.deferred_at_tile_borders, 0u);
+        // Tile times: every stretch's slowest tile at least its mean, at most all the work.
+        for (const TileTimes& t : {report.collapse_tile_times, report.reexpansion.tile_times}) {
+            EXPECT_EQ(t.tiles, 3u);
+            EXPECT_GT(t.stretches, 0u);
+            EXPECT_GE(t.slowest, t.mean);
+            EXPECT_LE(t.slowest, t.work);
+            EXPECT_GE(t.balance(), 1.0);
+        }
         return r;
     };
     const Reconstruction a = run(1);

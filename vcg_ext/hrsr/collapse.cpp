@@ -46,6 +46,7 @@ CollapsedCloud collapse(const std::vector<Vec3>& positions, const std::vector<Ve
         result.records = std::move(tiled.records);
         result.tile_collapses = result.records.size();
         result.tile_restarts = tiled.restarts;
+        result.tile_times = tiled.tile_times;
     }
     result.records.reserve(budget);
     if (result.records.size() < budget) {

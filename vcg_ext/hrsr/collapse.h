@@ -6,6 +6,7 @@
 #include "options.h"
 #include "parallel.h"
 #include "point_set.h"
+#include "reconstruction_stats.h"
 
 #include <cstdint>
 #include <vector>
@@ -30,6 +31,7 @@ struct CollapsedCloud {
     std::size_t tiles = 1;               ///< D-42: tiles of the spatial order
     std::size_t tile_collapses = 0;      ///< D-42: collapses done inside the tiles, in parallel
     std::size_t tile_restarts = 0; ///< D-42: the tiles started again (a step beyond the budget)
+    TileTimes tile_times;          ///< D-42: of the last start
 };
 
 /// Collapses the cloud (positions: the algorithm's unsmoothed coordinates; normals: unit,

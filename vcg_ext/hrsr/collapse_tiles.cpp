@@ -2,6 +2,7 @@
 
 #include "hrsr/range_collapser.h"
 
+#include <chrono>
 #include <limits>
 #include <memory>
 #include <queue>
@@ -19,6 +20,7 @@ struct TileRun {
     std::vector<CollapseRecord> records; ///< step by step: the tiles in order, then across
     bool overshot = false; ///< a step went beyond the target: start again below `ceiling`
     double ceiling = 0;
+    TileTimes times;
 
     // An edge i–j joins two tiles (or not): both ends are border nodes of their tiles.
     void mark_border(const Tiles& tiles, std::uint32_t i, std::uint32_t j) {
@@ -135,16 +137,22 @@ TileRun collapse_tiles(CollapseGraph& g, const Tiles& tiles, std::size_t target,
     double bound = 0, last_bound = 0;
     if (!first_bound(run, target, ceiling, bound)) return run;
     std::vector<std::vector<CollapseRecord>> step_records(tiles.count);
+    std::vector<double> seconds(tiles.count);
+    run.times.tiles = tiles.count;
     std::size_t done = 0;
     for (int step = 0; step < kTileSteps && target - done > target / kTileRest; ++step) {
         parallel_for(
             exec, tiles.count,
             [&](std::size_t t) {
+                const auto start = std::chrono::steady_clock::now();
                 double cost = 0;
                 while (run.collapsers[t]->next_cost(cost) && cost <= bound)
                     run.collapsers[t]->collapse_next(step_records[t]);
+                seconds[t] =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             },
             1);
+        run.times.add_stretch(seconds.data(), tiles.count);
         for (auto& records : step_records) {
             run.records.insert(run.records.end(), records.begin(), records.end());
             records.clear();
@@ -184,6 +192,7 @@ TiledCollapse collapse_in_tiles(CollapseGraph& g, const Tiles& tiles, std::size_
         ++result.restarts;
     }
     result.records = std::move(run.records);
+    result.tile_times = run.times;
     return result;
 }
 

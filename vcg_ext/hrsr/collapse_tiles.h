@@ -4,6 +4,7 @@
 
 #include "hrsr/collapse_graph.h"
 #include "options.h"
+#include "reconstruction_stats.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -33,6 +34,7 @@ inline constexpr std::size_t kTileRest = 64;
 struct TiledCollapse {
     std::vector<CollapseRecord> records; ///< step by step: the tiles in order, then across
     std::size_t restarts = 0;            ///< a step beyond the budget: started again lower
+    TileTimes tile_times;                ///< of the last start
 };
 
 /// Collapses g in tiles until less than 1/kTileRest of `budget` is left (never beyond it); a

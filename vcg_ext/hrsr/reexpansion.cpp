@@ -8,6 +8,7 @@
 #include "mesh/split_mesh.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace hrsr {
@@ -246,6 +247,7 @@ private:
             if (!by_tile[t].empty()) busy.push_back(t);
         std::vector<ReexpansionStats> tile_stats(busy.size());
         std::vector<TileLate> late(busy.size());
+        std::vector<double> seconds(busy.size());
         // Progress of the stretch as progress of the phase, from the calling thread; a cancel
         // stops the loop.
         Progress stretch([&](const std::string&, double fraction) {
@@ -259,7 +261,11 @@ private:
             parallel_for(
                 threads, busy.size(),
                 [&](std::size_t i) {
+                    const auto start = std::chrono::steady_clock::now();
                     replay_tile(by_tile[busy[i]], busy[i], merge_short, tile_stats[i], late[i]);
+                    seconds[i] =
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+                            .count();
                 },
                 1);
         } catch (...) {
@@ -267,6 +273,7 @@ private:
             throw;
         }
         mesh_.guard(false);
+        stats.tile_times.add_stretch(seconds.data(), busy.size());
         std::vector<Late> all;
         for (std::size_t i = 0; i < busy.size(); ++i) {
             add(stats, tile_stats[i]);
@@ -412,6 +419,7 @@ ReexpandedMesh replay_collapses(ReexpansionInput input, const Execution& exec,
     Replayer replayer(input, observer);
     stats.border_slivers_peeled = replayer.peel_border_slivers();
     stats.tiles = collapsing::Tiles(input.points.size()).count;
+    stats.tile_times.tiles = stats.tiles;
     // An observer reads the whole mesh after each split: one thread, the same tiles.
     const Execution replay_exec{observer ? 1 : exec.threads, exec.progress};
     if (exec.progress) exec.progress->begin("re-expansion");
