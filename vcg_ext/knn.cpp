@@ -8,9 +8,14 @@
 
 namespace hrsr {
 
+// Leaves of 32 points instead of vcglib's 16: fewer nodes to descend for the same points; on the
+// 800k dragon sample queries at k = 1, 8, 71 and 193 took 6–18 % less (docs/BENCHMARKS.md,
+// session 22).
+constexpr unsigned kPointsPerLeaf = 32;
+
 struct KnnIndex::Tree {
     explicit Tree(const std::vector<Vec3>& points)
-        : kd(vcg::ConstDataWrapper<Vec3>(points.data(), int(points.size()))) {}
+        : kd(vcg::ConstDataWrapper<Vec3>(points.data(), int(points.size())), kPointsPerLeaf) {}
     vcg::KdTree<double> kd;
 };
 
