@@ -56,9 +56,11 @@ struct CompactMesh {
 // Used points become vertices in point order; non-manifold ones get one copy per extra fan.
 // `triangles` are over the points on entry, over the vertices on return.
 template <class Point>
-CompactMesh<Point> compact(std::size_t points, std::vector<Triangle> triangles) {
+CompactMesh<Point> compact(std::size_t points, std::vector<Triangle> triangles,
+                           const Execution& exec) {
     CompactMesh<Point> m;
-    const std::vector<std::uint32_t> source = compact_and_split_vertices(points, triangles);
+    const std::vector<std::uint32_t> source =
+        compact_and_split_vertices(points, triangles, nullptr, exec);
     std::vector<std::uint8_t> used(points, 0);
     for (std::uint32_t p : source) {
         m.copies += used[p];
@@ -110,10 +112,10 @@ Reconstruction make_output(const PreparedCloud& cloud,
 // The mesh as written, measured into report.mesh once the fold repair is done (so that the
 // measures and D-6 see the faces it cut and added), and its closed components turned outwards.
 void measure_output(const PointSet& input, const Normalisation& normalisation, bool outward,
-                    Reconstruction& mesh, ReconstructionReport& report) {
+                    const Execution& exec, Reconstruction& mesh, ReconstructionReport& report) {
     Timer timer(report.timings, "measure");
     std::vector<std::uint32_t> component;
-    report.mesh = measure_mesh(mesh.vertex_input_index.size(), mesh.triangles, &component);
+    report.mesh = measure_mesh(mesh.vertex_input_index.size(), mesh.triangles, &component, exec);
     if (!outward) return;
     // Volumes in the normalised coordinates (D-2), as sanitize() computes them: far from the
     // origin the input's own would cancel.
@@ -286,8 +288,8 @@ void take_rsr_stats(const rsr::CloudMesh& m, ReconstructionReport& report) {
 // RsR's mesh of the coarse cloud, its non-manifold vertices split (§5.8), as the re-expansion
 // takes it.
 CoarseMesh coarse_mesh_of(const PreparedCloud& coarse, std::vector<Triangle> triangles,
-                          ReconstructionReport& report) {
-    CompactMesh<CoarseIndex> m = compact<CoarseIndex>(coarse.size(), std::move(triangles));
+                          const Execution& exec, ReconstructionReport& report) {
+    CompactMesh<CoarseIndex> m = compact<CoarseIndex>(coarse.size(), std::move(triangles), exec);
     report.vertex_copies = m.copies;
     CoarseMesh coarse_mesh;
     for (CoarseIndex p : m.vertex_point) {
@@ -403,9 +405,9 @@ struct InSpatialOrder {
 // The mesh in input indices and order, measured, its closed components turned outwards (D-6),
 // every input point accounted for.
 Reconstruction finished(const PointSet& input, const InSpatialOrder& ordered, bool outward,
-                        Unmeasured out, ReconstructionReport& report) {
+                        const Execution& exec, Unmeasured out, ReconstructionReport& report) {
     restore_input_order(ordered.order, out.mesh, report);
-    measure_output(input, out.normalisation, outward, out.mesh, report);
+    measure_output(input, out.normalisation, outward, exec, out.mesh, report);
     account(input, out.mesh, report);
     require_triangles(out.mesh, report);
     return std::move(out.mesh);
@@ -422,7 +424,8 @@ Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const E
     begin_phase(exec, "assembly");
     std::optional<Timer> assembly(std::in_place, report.timings, "assembly");
     report.small_holes_filled = fill_small_holes(rsr_mesh.triangles, cloud.positions);
-    CompactMesh<PointIndex> m = compact<PointIndex>(cloud.size(), std::move(rsr_mesh.triangles));
+    CompactMesh<PointIndex> m =
+        compact<PointIndex>(cloud.size(), std::move(rsr_mesh.triangles), exec);
     for (PointIndex p : m.unused) report.not_in_triangle.push_back(cloud.input_index[p].value());
     report.vertex_copies = m.copies;
     Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
@@ -477,7 +480,7 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
     rsr::CloudMesh rsr_mesh = rsr::reconstruct_cloud(coarse, options.rsr, exec, observer);
     take_rsr_stats(rsr_mesh, report);
 
-    CoarseMesh coarse_mesh = coarse_mesh_of(coarse, std::move(rsr_mesh.triangles), report);
+    CoarseMesh coarse_mesh = coarse_mesh_of(coarse, std::move(rsr_mesh.triangles), exec, report);
     coarse = PreparedCloud();
     report.l_min = options.l_min_percent > 0
                        ? options.l_min_percent / 100.0 * report.preprocess.bbox_diagonal
@@ -502,7 +505,7 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
     // The re-expanded mesh is manifold by construction; the fan split is a safety net.
     // Its vertices are compacted into the output's: both are VertexIndex, of two meshes.
     CompactMesh<VertexIndex> out =
-        compact<VertexIndex>(fine.vertex_node.size(), std::move(fine.triangles));
+        compact<VertexIndex>(fine.vertex_node.size(), std::move(fine.triangles), exec);
     report.vertex_copies += out.copies;
     IndexVector<VertexIndex, PointIndex> vertex_point;
     vertex_point.reserve(out.vertex_point.size());
@@ -522,7 +525,7 @@ Reconstruction reconstruct_rsr(const PointSet& input, const RsrOptions& options,
     validate(options);
     const InSpatialOrder ordered(input, exec, report);
     Unmeasured out = rsr_mesh_of(ordered.points, options, exec, report, observer);
-    return finished(input, ordered, options.orient_outward, std::move(out), report);
+    return finished(input, ordered, options.orient_outward, exec, std::move(out), report);
 }
 
 Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptions& options,
@@ -533,7 +536,7 @@ Reconstruction reconstruct_hrsr(const PointSet& input, const ReconstructionOptio
     InSpatialOrder ordered(input, exec, report);
     Unmeasured out =
         hrsr_mesh_of(ordered.points, options, exec, report, observer, reexpansion_observer);
-    return finished(input, ordered, options.rsr.orient_outward, std::move(out), report);
+    return finished(input, ordered, options.rsr.orient_outward, exec, std::move(out), report);
 }
 
 Reconstruction reconstruct(const PointSet& input, const ReconstructionOptions& options,

@@ -47,5 +47,27 @@ TEST(Fans, SplittingOnlyFlaggedVerticesGivesTheSameMesh) {
     EXPECT_EQ(whole[2][0], 10u); // the second fan uses the copy
 }
 
+TEST(Fans, AnyThreadCountNumbersTheSameFans) {
+    // 5,000 bow ties (vertices over several blocks of the parallel numbering), their triangles
+    // listed back to front so that a vertex's corners come in no particular order.
+    std::vector<Triangle> triangles;
+    for (std::uint32_t b = 5000; b-- > 0;)
+        for (const Triangle& t : bow_tie())
+            triangles.push_back({t[0] + 10 * b, t[1] + 10 * b, t[2] + 10 * b});
+    const Fans one = compute_fans(50000, triangles);
+    for (int threads : {2, 8}) {
+        const Fans many = compute_fans(50000, triangles, {threads, nullptr});
+        EXPECT_EQ(many.fan_count, one.fan_count);
+        EXPECT_EQ(many.corner_fan, one.corner_fan);
+        std::vector<Triangle> split_one = triangles, split_many = triangles;
+        EXPECT_EQ(compact_and_split_vertices(50000, split_many, nullptr, {threads, nullptr}),
+                  compact_and_split_vertices(50000, split_one));
+        EXPECT_EQ(split_many, split_one);
+    }
+    std::size_t bow_ties = 0;
+    for (std::uint32_t b = 0; b < 5000; ++b) bow_ties += one.fan_count[10 * b] == 2;
+    EXPECT_EQ(bow_ties, 5000u);
+}
+
 } // namespace
 } // namespace hrsr

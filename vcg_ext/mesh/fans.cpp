@@ -48,15 +48,23 @@ private:
 
 } // namespace
 
-Fans compute_fans(std::size_t n, const std::vector<Triangle>& triangles) {
+Fans compute_fans(std::size_t n, const std::vector<Triangle>& triangles, const Execution& exec) {
     const VertexCorners at = corners_by_vertex(n, triangles);
     Fans fans;
     fans.corner_fan.assign(3 * triangles.size(), 0);
     fans.fan_count.assign(n, 0);
-    FanNumbering numbering(triangles, fans);
-    for (std::uint32_t v = 0; v < n; ++v)
-        if (at.end(v) > at.begin(v))
-            numbering.number(v, at.corner.data() + at.begin(v), at.end(v) - at.begin(v));
+    // Blocks of vertices: each writes only its vertices' counts and corners.
+    constexpr std::size_t kBlock = 4096;
+    parallel_for(
+        {exec.threads, nullptr}, (n + kBlock - 1) / kBlock,
+        [&](std::size_t block) {
+            FanNumbering numbering(triangles, fans);
+            const std::uint32_t end = std::uint32_t(std::min(n, (block + 1) * kBlock));
+            for (std::uint32_t v = std::uint32_t(block * kBlock); v < end; ++v)
+                if (at.end(v) > at.begin(v))
+                    numbering.number(v, at.corner.data() + at.begin(v), at.end(v) - at.begin(v));
+        },
+        1);
     return fans;
 }
 
@@ -85,8 +93,9 @@ Fans compute_fans(std::size_t n, const std::vector<Triangle>& triangles,
 
 std::vector<std::uint32_t> split_non_manifold_vertices(std::size_t n,
                                                        std::vector<Triangle>& triangles,
-                                                       const std::vector<std::uint8_t>* only) {
-    const Fans fans = only ? compute_fans(n, triangles, *only) : compute_fans(n, triangles);
+                                                       const std::vector<std::uint8_t>* only,
+                                                       const Execution& exec) {
+    const Fans fans = only ? compute_fans(n, triangles, *only) : compute_fans(n, triangles, exec);
     std::vector<std::uint32_t> source(n);
     std::iota(source.begin(), source.end(), 0u);
     std::vector<std::uint32_t> first_copy(n, 0);
@@ -104,7 +113,8 @@ std::vector<std::uint32_t> split_non_manifold_vertices(std::size_t n,
 
 std::vector<std::uint32_t> compact_and_split_vertices(std::size_t vertex_count,
                                                       std::vector<Triangle>& triangles,
-                                                      const std::vector<std::uint8_t>* only) {
+                                                      const std::vector<std::uint8_t>* only,
+                                                      const Execution& exec) {
     std::vector<std::uint32_t> vertex_of(vertex_count, ~0u), used;
     for (const Triangle& t : triangles)
         for (std::uint32_t v : t) vertex_of[v] = 0;
@@ -121,7 +131,7 @@ std::vector<std::uint32_t> compact_and_split_vertices(std::size_t vertex_count,
         for (std::size_t w = 0; w < used.size(); ++w) only_used[w] = (*only)[used[w]];
     }
     std::vector<std::uint32_t> source =
-        split_non_manifold_vertices(used.size(), triangles, only ? &only_used : nullptr);
+        split_non_manifold_vertices(used.size(), triangles, only ? &only_used : nullptr, exec);
     for (std::uint32_t& v : source) v = used[v];
     return source;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "mesh/triangle_mesh.h"
+#include "parallel.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -16,8 +17,10 @@ struct Fans {
     std::vector<std::uint32_t> fan_count; ///< per vertex
 };
 
-/// Fans are numbered per vertex in the order of their smallest triangle index (deterministic).
-Fans compute_fans(std::size_t vertex_count, const std::vector<Triangle>& triangles);
+/// Fans are numbered per vertex in the order of their smallest triangle index (deterministic);
+/// vertices in parallel (`exec`'s threads, no progress), the same result for any thread count.
+Fans compute_fans(std::size_t vertex_count, const std::vector<Triangle>& triangles,
+                  const Execution& exec = Execution{1, nullptr});
 
 /// The same for the vertices flagged in `only` (per vertex); every other vertex is taken to have
 /// one fan (the caller knows its faces did not change since it had one).
@@ -30,7 +33,8 @@ Fans compute_fans(std::size_t vertex_count, const std::vector<Triangle>& triangl
 /// With `only`, only the flagged vertices are looked at (compute_fans above).
 std::vector<std::uint32_t>
 split_non_manifold_vertices(std::size_t vertex_count, std::vector<Triangle>& triangles,
-                            const std::vector<std::uint8_t>* only = nullptr);
+                            const std::vector<std::uint8_t>* only = nullptr,
+                            const Execution& exec = Execution{1, nullptr});
 
 /// The vertices `triangles` use (of `vertex_count`), renumbered in index order, then split as
 /// above: `triangles` is rewritten over the result. Returns, for every vertex of the result, the
@@ -38,6 +42,7 @@ split_non_manifold_vertices(std::size_t vertex_count, std::vector<Triangle>& tri
 /// `only`, if given, flags (in the given numbering) the vertices that may have several fans.
 std::vector<std::uint32_t>
 compact_and_split_vertices(std::size_t vertex_count, std::vector<Triangle>& triangles,
-                           const std::vector<std::uint8_t>* only = nullptr);
+                           const std::vector<std::uint8_t>* only = nullptr,
+                           const Execution& exec = Execution{1, nullptr});
 
 } // namespace hrsr

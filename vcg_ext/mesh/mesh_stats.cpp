@@ -77,7 +77,7 @@ std::vector<std::uint32_t> label_components(const HalfEdges& edges, std::size_t 
 } // namespace
 
 MeshStats measure_mesh(std::size_t n, const std::vector<Triangle>& triangles,
-                       std::vector<std::uint32_t>* triangle_component) {
+                       std::vector<std::uint32_t>* triangle_component, const Execution& exec) {
     MeshStats s;
     s.faces = triangles.size();
     std::vector<std::uint8_t> used(n, 0);
@@ -125,7 +125,7 @@ MeshStats measure_mesh(std::size_t n, const std::vector<Triangle>& triangles,
         }
     }
     for (std::uint32_t t = 0; t < triangles.size(); ++t) ++s.components[component[t]].faces;
-    const Fans fans = compute_fans(n, triangles);
+    const Fans fans = compute_fans(n, triangles, exec);
     s.non_manifold_vertices = std::size_t(std::count_if(
         fans.fan_count.begin(), fans.fan_count.end(), [](std::uint32_t c) { return c > 1; }));
     if (triangle_component) *triangle_component = std::move(component);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "mesh/triangle_mesh.h"
+#include "parallel.h"
 #include "point_set.h"
 
 #include <cstddef>
@@ -40,7 +41,8 @@ const ComponentTopology* largest_component(const MeshStats& mesh);
 /// Measures `triangles` over `vertex_count` vertices; optionally also gives each triangle's
 /// face-connected component (through shared edges; ids in order of first triangle).
 MeshStats measure_mesh(std::size_t vertex_count, const std::vector<Triangle>& triangles,
-                       std::vector<std::uint32_t>* triangle_component = nullptr);
+                       std::vector<std::uint32_t>* triangle_component = nullptr,
+                       const Execution& exec = Execution{1, nullptr});
 
 /// Signed volume enclosed by the triangles of one component (positive when they wind
 /// counter-clockwise seen from outside).
