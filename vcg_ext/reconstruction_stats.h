@@ -3,6 +3,7 @@
 // mesh/fold_repair.h and hrsr/reexpansion.h, which fill them, include this header.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 
 namespace hrsr {
@@ -61,6 +62,13 @@ struct TileTimes {
     }
     /// Slowest over mean tile, summed over stretches (1: perfectly even; 0 without tiles).
     double balance() const { return mean > 0 ? slowest / mean : 0; }
+    /// Runs one tile's work of a stretch; returns its wall-clock seconds.
+    template <class Work>
+    static double seconds_of(Work&& work) {
+        const auto start = std::chrono::steady_clock::now();
+        work();
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
 };
 
 /// HRsR's re-expansion (hrsr/reexpansion.h, ALGORITHM.md §8).

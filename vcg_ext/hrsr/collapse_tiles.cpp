@@ -2,7 +2,6 @@
 
 #include "hrsr/range_collapser.h"
 
-#include <chrono>
 #include <limits>
 #include <memory>
 #include <queue>
@@ -144,12 +143,11 @@ TileRun collapse_tiles(CollapseGraph& g, const Tiles& tiles, std::size_t target,
         parallel_for(
             exec, tiles.count,
             [&](std::size_t t) {
-                const auto start = std::chrono::steady_clock::now();
-                double cost = 0;
-                while (run.collapsers[t]->next_cost(cost) && cost <= bound)
-                    run.collapsers[t]->collapse_next(step_records[t]);
-                seconds[t] =
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                seconds[t] = TileTimes::seconds_of([&] {
+                    double cost = 0;
+                    while (run.collapsers[t]->next_cost(cost) && cost <= bound)
+                        run.collapsers[t]->collapse_next(step_records[t]);
+                });
             },
             1);
         run.times.add_stretch(seconds.data(), tiles.count);

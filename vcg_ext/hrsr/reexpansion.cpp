@@ -8,7 +8,6 @@
 #include "mesh/split_mesh.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace hrsr {
@@ -261,11 +260,9 @@ private:
             parallel_for(
                 threads, busy.size(),
                 [&](std::size_t i) {
-                    const auto start = std::chrono::steady_clock::now();
-                    replay_tile(by_tile[busy[i]], busy[i], merge_short, tile_stats[i], late[i]);
-                    seconds[i] =
-                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-                            .count();
+                    seconds[i] = TileTimes::seconds_of([&] {
+                        replay_tile(by_tile[busy[i]], busy[i], merge_short, tile_stats[i], late[i]);
+                    });
                 },
                 1);
         } catch (...) {
