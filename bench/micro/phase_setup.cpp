@@ -45,7 +45,7 @@ void RsrState::run(RsrPhase phase) {
         geometry = std::make_unique<rsr::GeometryCheck>(index, cloud.smoothed, normals, *rotation);
         embedding = std::make_unique<rsr::Embedding>(
             rsr::Embedding{*rotation, *faces, *geometry, triangles, nullptr});
-        rsr::split_faces(*embedding, candidates, nullptr);
+        rsr::split_faces(*embedding, candidates, {});
         break;
     case RsrPhase::Handles:
         rsr::insert_handles(*embedding, index, options,

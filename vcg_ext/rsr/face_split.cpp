@@ -2,6 +2,7 @@
 
 #include "geometry.h"
 #include "options.h"
+#include "parallel.h"
 
 #include <algorithm>
 
@@ -63,34 +64,94 @@ bool register_triangles(const RotationSystem& rs, std::uint32_t v1, std::uint32_
     return !found.empty(); // common neighbours but no triangle: the edge would cut across
 }
 
+// What a batch's parallel look-ahead learnt about a candidate from the rotation as it was before
+// the batch. The face split only inserts edges and splits faces, so two answers cannot change:
+// an edge once there stays, and wedges once in different faces stay in different faces (each
+// later face descends from one earlier face). Neither can a crossing found by the geometry
+// check; its pass holds unless an edge was inserted since at one of the nearby points it read.
+enum class Outlook : std::uint8_t { Adjacent, DifferentFaces, Open };
+
+struct Foresight {
+    std::vector<Outlook> outlook;
+    std::vector<std::uint8_t> geometry_passed;
+    std::vector<std::vector<std::uint32_t>> near; ///< the geometry check's nearby points
+};
+
+void work_out_ahead(const Embedding& e, const std::vector<CandidateEdge>& candidates,
+                    std::size_t first, std::size_t count, const Execution& exec, Foresight& f) {
+    parallel_for(exec, count, [&](std::size_t k) {
+        const std::uint32_t v1 = candidates[first + k].i, v2 = candidates[first + k].j;
+        if (e.rotation.adjacent(v1, v2)) {
+            f.outlook[k] = Outlook::Adjacent;
+        } else if (e.faces.face_of_wedge(v1, v2) != e.faces.face_of_wedge(v2, v1)) {
+            f.outlook[k] = Outlook::DifferentFaces;
+        } else {
+            f.outlook[k] = Outlook::Open;
+            thread_local GeometryQuery query;
+            f.geometry_passed[k] = e.geometry.passes(v1, v2, query);
+            f.near[k].assign(query.near.begin(), query.near.end());
+        }
+    });
+}
+
+// The geometry check's answer now, from its answer before the batch: a pass is tested again
+// only against the edges of nearby points that gained an edge in this batch.
+bool geometry_still_passes(const Embedding& e, const Foresight& f, std::size_t k, std::uint32_t v1,
+                           std::uint32_t v2, const std::vector<std::uint32_t>& changed_in,
+                           std::uint32_t batch) {
+    if (!f.geometry_passed[k]) return false;
+    for (std::uint32_t a : f.near[k])
+        if (changed_in[a] == batch && e.geometry.crossed_at(v1, v2, a)) return false;
+    return true;
+}
+
 } // namespace
 
+// kFaceSplitLookAhead: enough for every thread to have work, few enough that the nearby points
+// of a geometry check rarely gained an edge before the candidate's turn.
 FaceSplitStats split_faces(Embedding& e, const std::vector<CandidateEdge>& candidates,
-                           Progress* progress) {
+                           const Execution& exec, std::size_t look_ahead) {
+    const std::size_t batch_size = std::max<std::size_t>(look_ahead, 1);
     RotationSystem& rs = e.rotation;
     FaceSplitStats stats;
     std::vector<LocalTriangle> closed;
-    for (std::size_t c = 0; c < candidates.size(); ++c) {
-        if (progress && (c & 0x3fff) == 0) progress->update(double(c) / double(candidates.size()));
-        const std::uint32_t v1 = candidates[c].i, v2 = candidates[c].j;
-        if (rs.adjacent(v1, v2)) continue; // MST edges, and edges already inserted
-        if (e.faces.face_of_wedge(v1, v2) != e.faces.face_of_wedge(v2, v1)) {
-            ++stats.rejected_topology;
-            continue;
+    Foresight ahead{std::vector<Outlook>(batch_size), std::vector<std::uint8_t>(batch_size),
+                    std::vector<std::vector<std::uint32_t>>(batch_size)};
+    std::vector<std::uint32_t> changed_in(rs.vertex_count(), 0); ///< last batch (from 1) inserting
+    std::uint32_t batch = 0;
+    for (std::size_t first = 0; first < candidates.size(); first += batch_size) {
+        if (exec.progress) exec.progress->update(double(first) / double(candidates.size()));
+        const std::size_t count = std::min(batch_size, candidates.size() - first);
+        work_out_ahead(e, candidates, first, count, exec, ahead);
+        ++batch;
+        for (std::size_t k = 0; k < count; ++k) {
+            const Outlook outlook = ahead.outlook[k];
+            if (outlook == Outlook::Adjacent) continue; // MST edges
+            if (outlook == Outlook::DifferentFaces) {
+                ++stats.rejected_topology;
+                continue;
+            }
+            const std::uint32_t v1 = candidates[first + k].i, v2 = candidates[first + k].j;
+            if (rs.adjacent(v1, v2)) continue;
+            if (e.faces.face_of_wedge(v1, v2) != e.faces.face_of_wedge(v2, v1)) {
+                ++stats.rejected_topology;
+                continue;
+            }
+            if (!geometry_still_passes(e, ahead, k, v1, v2, changed_in, batch)) {
+                ++stats.rejected_geometry;
+                continue;
+            }
+            if (!register_triangles(rs, v1, v2, closed)) {
+                ++stats.rejected_triangles;
+                continue;
+            }
+            const auto [d1, d2] = rs.insert_edge(v1, v2);
+            e.faces.split(d1, d2);
+            changed_in[v1] = changed_in[v2] = batch;
+            for (const LocalTriangle& t : closed) e.record_triangle(t[0], t[1], t[2]);
+            ++stats.inserted;
+            e.edge_inserted(Phase::FaceSplit, v1, v2, closed.size());
         }
-        if (!e.geometry.passes(v1, v2)) {
-            ++stats.rejected_geometry;
-            continue;
-        }
-        if (!register_triangles(rs, v1, v2, closed)) {
-            ++stats.rejected_triangles;
-            continue;
-        }
-        const auto [d1, d2] = rs.insert_edge(v1, v2);
-        e.faces.split(d1, d2);
-        for (const LocalTriangle& t : closed) e.record_triangle(t[0], t[1], t[2]);
-        ++stats.inserted;
-        e.edge_inserted(Phase::FaceSplit, v1, v2, closed.size());
     }
     return stats;
 }

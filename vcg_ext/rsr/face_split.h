@@ -2,6 +2,7 @@
 // when they split a face, pass the geometry check, and close valid triangles.
 #pragma once
 
+#include "parallel.h"
 #include "rsr/candidate_graph.h"
 #include "rsr/embedding.h"
 
@@ -16,9 +17,14 @@ struct FaceSplitStats {
     std::size_t rejected_triangles = 0; ///< would close an invalid triangle
 };
 
-/// Runs the phase on `candidates` (ascending length); records the triangles it closes.
+/// Candidates whose fate threads work out ahead, in parallel, from the rotation before them.
+inline constexpr std::size_t kFaceSplitLookAhead = 4096;
+
+/// Runs the phase on `candidates` (ascending length); records the triangles it closes. The result
+/// is that of taking the candidates one by one, for any thread count and look-ahead (1 = none):
+/// threads only work out answers that the edges inserted meanwhile cannot change.
 FaceSplitStats split_faces(Embedding& embedding, const std::vector<CandidateEdge>& candidates,
-                           Progress* progress);
+                           const Execution& exec, std::size_t look_ahead = kFaceSplitLookAhead);
 
 /// Adds one to the triangle counter of edge {u, w} (both darts).
 void count_triangle_edge(RotationSystem& rotation, std::uint32_t u, std::uint32_t w);

@@ -63,7 +63,7 @@ std::vector<LocalTriangle> reconstruct_component(const ComponentCloud& cloud,
     begin(exec, "face split");
     GeometryCheck geometry(index, cloud.smoothed, normals, rotation);
     Embedding embedding{rotation, faces, geometry, triangles, observer};
-    stats.face_split = split_faces(embedding, candidates, exec.progress);
+    stats.face_split = split_faces(embedding, candidates, exec);
     clock.lap("face split");
 
     // The handle search also runs with a genus limit (even 0) to learn whether the limit left a

@@ -1,0 +1,82 @@
+// The face split's parallel look-ahead (rsr/face_split.cpp) must give what taking the candidates
+// one by one gives (look-ahead 1): the same triangles, the same rotation and the same counts, for
+// any thread count.
+#include "knn.h"
+#include "options.h"
+#include "rsr/candidate_graph.h"
+#include "rsr/face_split.h"
+#include "rsr/spanning_tree.h"
+#include "samplers.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+namespace hrsr {
+namespace {
+
+struct Split {
+    std::vector<rsr::LocalTriangle> triangles;
+    rsr::FaceSplitStats stats;
+    std::vector<std::vector<std::uint32_t>> rotation; ///< neighbours of each vertex, in order
+    std::size_t faces = 0;
+};
+
+// RsR's stages up to the face split (as reconstruct_component runs them), then the face split.
+Split split(const rsr::ComponentCloud& cloud, const KnnIndex& index, int threads,
+            std::size_t look_ahead) {
+    const PreprocessOptions pre;
+    const rsr::CandidateGraph graph = rsr::build_candidate_graph(cloud, index, pre, {});
+    const auto candidates = rsr::face_split_candidates(graph, cloud, pre.distance, {});
+    const SpanningForest tree = rsr::candidate_spanning_tree(graph, cloud);
+    const std::vector<Vec3> normals = rsr::fix_leaf_normals(tree, cloud);
+    rsr::RotationSystem rotation(cloud.smoothed, normals);
+    for (std::uint32_t v : tree.order)
+        if (tree.parent[v] != SpanningForest::kRoot) rotation.insert_edge(tree.parent[v], v);
+    rsr::Faces faces(rotation);
+    faces.label_all();
+    rsr::GeometryCheck geometry(index, cloud.smoothed, normals, rotation);
+    Split s;
+    rsr::Embedding e{rotation, faces, geometry, s.triangles, nullptr};
+    s.stats = rsr::split_faces(e, candidates, {threads, nullptr}, look_ahead);
+    for (std::uint32_t v = 0; v < rotation.vertex_count(); ++v) {
+        s.rotation.emplace_back();
+        for (const rsr::Dart& d : rotation.darts(v)) s.rotation.back().push_back(d.to);
+    }
+    s.faces = faces.count();
+    return s;
+}
+
+void expect_same(const Split& a, const Split& b) {
+    EXPECT_EQ(a.triangles, b.triangles);
+    EXPECT_EQ(a.rotation, b.rotation);
+    EXPECT_EQ(a.faces, b.faces);
+    EXPECT_EQ(a.stats.inserted, b.stats.inserted);
+    EXPECT_EQ(a.stats.rejected_topology, b.stats.rejected_topology);
+    EXPECT_EQ(a.stats.rejected_geometry, b.stats.rejected_geometry);
+    EXPECT_EQ(a.stats.rejected_triangles, b.stats.rejected_triangles);
+}
+
+// A noisy graded double torus: every kind of rejection occurs, and candidates whose wedges share
+// a face before their batch are often split apart by an earlier candidate of the same batch.
+TEST(FaceSplit, LookingAheadInParallelTakesTheCandidatesAsOneByOne) {
+    PointSet s = testing::sample_double_torus(12000, testing::Density::Graded);
+    testing::add_noise(s, 0.004 * testing::bounding_box_diagonal(s));
+    const rsr::ComponentCloud cloud{s.positions, s.positions, s.normals, s.size(), {}};
+    const KnnIndex index(cloud.smoothed);
+    const Split one_by_one = split(cloud, index, 1, 1);
+    ASSERT_GT(one_by_one.stats.inserted, 10000u);
+    EXPECT_GT(one_by_one.stats.rejected_topology, 0u);
+    EXPECT_GT(one_by_one.stats.rejected_geometry, 0u);
+    EXPECT_GT(one_by_one.stats.rejected_triangles, 0u);
+    for (std::size_t look_ahead : {std::size_t(64), rsr::kFaceSplitLookAhead})
+        for (int threads : {1, 2, 8}) {
+            SCOPED_TRACE(::testing::Message()
+                         << "look-ahead " << look_ahead << ", " << threads << " threads");
+            expect_same(split(cloud, index, threads, look_ahead), one_by_one);
+        }
+}
+
+} // namespace
+} // namespace hrsr
