@@ -78,5 +78,33 @@ TEST(FaceSplit, LookingAheadInParallelTakesTheCandidatesAsOneByOne) {
         }
 }
 
+// The candidates are sorted in parallel: the list must be the ascending (length, i, j) one for any
+// thread count.
+TEST(FaceSplit, CandidatesAreInOneOrderForAnyThreadCount) {
+    const PointSet s = testing::sample_torus(20000);
+    const rsr::ComponentCloud cloud{s.positions, s.positions, s.normals, s.size(), {}};
+    const KnnIndex index(cloud.smoothed);
+    const PreprocessOptions pre;
+    const rsr::CandidateGraph graph = rsr::build_candidate_graph(cloud, index, pre, {});
+    const auto one = rsr::face_split_candidates(graph, cloud, pre.distance, {1, nullptr});
+    ASSERT_GT(one.size(), 100000u);
+    for (std::size_t c = 1; c < one.size(); ++c) {
+        const auto& a = one[c - 1];
+        const auto& b = one[c];
+        ASSERT_TRUE(a.length < b.length ||
+                    (a.length == b.length && (a.i < b.i || (a.i == b.i && a.j < b.j))))
+            << "at " << c;
+    }
+    for (int threads : {2, 8}) {
+        const auto many =
+            rsr::face_split_candidates(graph, cloud, pre.distance, {threads, nullptr});
+        ASSERT_EQ(many.size(), one.size());
+        for (std::size_t c = 0; c < one.size(); ++c)
+            ASSERT_TRUE(many[c].length == one[c].length && many[c].i == one[c].i &&
+                        many[c].j == one[c].j)
+                << threads << " threads, at " << c;
+    }
+}
+
 } // namespace
 } // namespace hrsr
