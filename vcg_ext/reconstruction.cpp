@@ -303,7 +303,7 @@ CoarseMesh coarse_mesh_of(const PreparedCloud& coarse, std::vector<Triangle> tri
     // about those on the fine mesh.
     report.coarse_small_holes_filled =
         fill_small_holes(coarse_mesh.triangles, coarse_mesh.positions, {}, kMaxFilledLoop,
-                         SmallHoleScope::PiecesClosedButForThem);
+                         SmallHoleScope::PiecesClosedButForThem, exec);
     return coarse_mesh;
 }
 
@@ -381,7 +381,8 @@ void finish_border(ReexpandedMesh& fine, const std::vector<Vec3>& geometry, int 
     // holes are only a few coarse spacings across) open again.
     report.unsampled_triangles_removed = remove_unsampled_triangles(
         fine.triangles, geometry, fine.vertex_node, candidate_rank, exec);
-    report.small_holes_filled = fill_small_holes(fine.triangles, geometry, fine.vertex_node);
+    report.small_holes_filled = fill_small_holes(fine.triangles, geometry, fine.vertex_node,
+                                                 kMaxFilledLoop, SmallHoleScope::Every, exec);
 }
 
 // A mesh of the cloud in spatial order and what measuring it needs.
@@ -423,7 +424,8 @@ Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const E
     take_rsr_stats(rsr_mesh, report);
     begin_phase(exec, "assembly");
     std::optional<Timer> assembly(std::in_place, report.timings, "assembly");
-    report.small_holes_filled = fill_small_holes(rsr_mesh.triangles, cloud.positions);
+    report.small_holes_filled = fill_small_holes(rsr_mesh.triangles, cloud.positions, {},
+                                                 kMaxFilledLoop, SmallHoleScope::Every, exec);
     CompactMesh<PointIndex> m =
         compact<PointIndex>(cloud.size(), std::move(rsr_mesh.triangles), exec);
     for (PointIndex p : m.unused) report.not_in_triangle.push_back(cloud.input_index[p].value());

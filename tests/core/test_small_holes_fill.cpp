@@ -208,5 +208,65 @@ TEST(FillSmallHoles, TheScopeClosesOnlyPiecesClosedButForShortLoops) {
     EXPECT_EQ(measure_mesh(v.size(), t).boundary_edges, 7u);
 }
 
+// Thousands of pieces (vertices and triangles over several blocks of the parallel loops), their
+// triangles listed back to front: a triangle hole and a pentagon (closed), a pentagon pierced by
+// a triangle (every fan crosses the mesh: open), a 6-edge loop (open) and an octahedron without
+// a face (closed by the default scope only). The same mesh for 1, 2 and 8 threads.
+TEST(FillSmallHoles, AnyThreadCountClosesTheSameHoles) {
+    std::vector<Vec3> icosahedron_points,
+        octahedron_points{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    std::vector<Triangle> full,
+        octahedron{{2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    icosahedron(icosahedron_points, full);
+    std::vector<Triangle> without_one = full;
+    without_one.erase(without_one.begin() + 7);
+    std::vector<Vec3> pierced_points = icosahedron_points;
+    std::vector<Triangle> pierced = without_star(full, 0);
+    const Vec3 axis = pierced_points[0] / pierced_points[0].Norm();
+    const Vec3 side = (axis ^ Vec3(0, 0, 1)) / (axis ^ Vec3(0, 0, 1)).Norm();
+    pierced_points.insert(pierced_points.end(),
+                          {axis * 0.2 - side * 0.05, axis * 0.2 + side * 0.05, axis * 3.0});
+    pierced.push_back({12, 13, 14});
+
+    std::vector<Vec3> v;
+    std::vector<Triangle> t;
+    std::size_t closable = 0, closable_in_scope = 0;
+    for (int piece = 0; piece < 4000; ++piece) {
+        const Vec3 offset(8.0 * (piece % 64), 8.0 * (piece / 64), 0);
+        switch (piece % 5) {
+        case 0:
+            append_piece(v, t, icosahedron_points, without_one, offset);
+            break;
+        case 1:
+            append_piece(v, t, icosahedron_points, without_star(full, 0), offset);
+            break;
+        case 2:
+            append_piece(v, t, pierced_points, pierced, offset);
+            break;
+        case 3:
+            append_piece(v, t, icosahedron_points, without_star(without_star(full, 0), 1), offset);
+            break;
+        default:
+            append_piece(v, t, octahedron_points, octahedron, offset);
+        }
+        closable += piece % 5 == 0 || piece % 5 == 1 || piece % 5 == 4;
+        closable_in_scope += piece % 5 == 0 || piece % 5 == 1;
+    }
+    std::reverse(t.begin(), t.end());
+    ASSERT_GT(v.size(), 40000u);
+
+    for (SmallHoleScope scope : {SmallHoleScope::Every, SmallHoleScope::PiecesClosedButForThem}) {
+        std::vector<Triangle> one = t;
+        const std::size_t closed = fill_small_holes(one, v, {}, kMaxFilledLoop, scope);
+        EXPECT_EQ(closed, scope == SmallHoleScope::Every ? closable : closable_in_scope);
+        for (int threads : {2, 8}) {
+            std::vector<Triangle> many = t;
+            EXPECT_EQ(fill_small_holes(many, v, {}, kMaxFilledLoop, scope, {threads, nullptr}),
+                      closed);
+            EXPECT_EQ(many, one) << threads << " threads";
+        }
+    }
+}
+
 } // namespace
 } // namespace hrsr

@@ -15,6 +15,8 @@ namespace {
 constexpr std::uint32_t kNone = 0xffffffffu;
 constexpr std::uint32_t kMany = 0xfffffffeu;
 const double kMinFanAngle = M_PI / 180.0;
+// Vertices or triangles per task of the parallel loops (cheap bodies).
+constexpr std::size_t kBlock = 16384;
 
 /// Vertex v at points[vertex_point[v]] (or points[v] when vertex_point is empty): HRsR's
 /// vertices stand for cloud points, and a copy of their positions would add to the peak.
@@ -44,6 +46,17 @@ public:
         }
         return false;
     }
+    /// The vertex before b along the hole b borders (see hole_successors), kNone or kMany: the
+    /// edges a → b into b are at b's corners, and a → b borders a hole when no b → a exists.
+    std::uint32_t hole_successor(std::uint32_t b) const {
+        std::uint32_t next = kNone;
+        for (std::uint32_t i = corners_.begin(b); i < corners_.end(b); ++i) {
+            const std::uint32_t c = corners_.corner[i];
+            const std::uint32_t a = triangles_[c / 3][(c % 3 + 2) % 3];
+            if (!has(b, a)) next = next == kNone ? a : kMany;
+        }
+        return next;
+    }
     /// Some triangle has the edge {a, b}.
     bool has_either(std::uint32_t a, std::uint32_t b) const {
         for (std::uint32_t i = corners_.begin(a); i < corners_.end(a); ++i) {
@@ -71,16 +84,18 @@ private:
 
 // next[v]: the vertex after v along the hole it borders (a → b is a boundary edge of a triangle
 // when no triangle has b → a; the hole then runs b → a), kNone when v is on no hole, kMany when
-// on more than one hole edge.
-std::vector<std::uint32_t> hole_successors(const std::vector<Triangle>& triangles,
-                                           const DirectedEdges& edges, std::size_t vertices) {
+// on more than one hole edge. By vertex (each writes its own entry), in parallel blocks.
+std::vector<std::uint32_t> hole_successors(const DirectedEdges& edges, std::size_t vertices,
+                                           const Execution& exec) {
     std::vector<std::uint32_t> next(vertices, kNone);
-    for (const Triangle& t : triangles)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = t[k], b = t[(k + 1) % 3];
-            if (edges.has(b, a)) continue;
-            next[b] = next[b] == kNone ? a : kMany;
-        }
+    parallel_for(
+        exec, (vertices + kBlock - 1) / kBlock,
+        [&](std::size_t block) {
+            const std::size_t end = std::min(vertices, (block + 1) * kBlock);
+            for (std::size_t b = block * kBlock; b < end; ++b)
+                next[b] = edges.hole_successor(std::uint32_t(b));
+        },
+        1);
     return next;
 }
 
@@ -230,10 +245,47 @@ private:
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
 };
 
+// Marks the fans that a triangle of the mesh intersects, by parallel blocks of triangles, each
+// listing the (fill, fan) pairs it finds: crossing is an OR over the triangles, so merging the
+// lists afterwards gives what one pass in triangle order gives.
+template <class Intersect>
+void mark_crossed_by_mesh(std::vector<Fill>& fills, const std::vector<Triangle>& triangles,
+                          const FillGrid& grid, const Intersect& intersect, const Execution& exec) {
+    using Hit = std::pair<std::uint32_t, std::uint32_t>; // fill, fan
+    std::vector<std::vector<Hit>> hits((triangles.size() + kBlock - 1) / kBlock);
+    parallel_for(
+        exec, hits.size(),
+        [&](std::size_t block) {
+            std::vector<std::uint32_t> near;
+            std::vector<Hit>& found = hits[block];
+            const std::size_t end = std::min(triangles.size(), (block + 1) * kBlock);
+            for (std::size_t t = block * kBlock; t < end; ++t) {
+                const Box b = grid.box(triangles[t]);
+                grid.near(b, near);
+                for (std::uint32_t i : near) {
+                    const Fill& f = fills[i];
+                    if (!f.box.overlaps(b)) continue;
+                    for (std::uint32_t k = 0; k < f.fans.size(); ++k) {
+                        if (f.crossing[k] || std::count(found.begin(), found.end(), Hit{i, k}))
+                            continue; // known to cross
+                        for (const Triangle& s : f.fans[k])
+                            if (intersect(s, triangles[t])) {
+                                found.emplace_back(i, k);
+                                break;
+                            }
+                    }
+                }
+            }
+        },
+        1);
+    for (const std::vector<Hit>& found : hits)
+        for (const auto& [i, k] : found) fills[i].crossing[k] = true;
+}
+
 // A fill must not add a fold (the hrsr check test): each loop takes its best fan that intersects
 // neither the mesh nor itself, and a fill whose fan intersects an earlier fill's is dropped.
 void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangles,
-                 const VertexPositions& positions) {
+                 const VertexPositions& positions, const Execution& exec) {
     if (fills.empty()) return;
     const TriangleGeometry geometry(positions.points, {});
     // The pair test takes proper triangles: an exactly degenerate one of the mesh is skipped, as
@@ -250,18 +302,8 @@ void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangle
                 for (std::size_t b = a + 1; b < f.fans[k].size(); ++b)
                     if (intersect(f.fans[k][a], f.fans[k][b])) f.crossing[k] = true;
     }
+    mark_crossed_by_mesh(fills, triangles, grid, intersect, exec);
     std::vector<std::uint32_t> near;
-    for (const Triangle& t : triangles) {
-        const Box b = grid.box(t);
-        grid.near(b, near);
-        for (std::uint32_t i : near) {
-            Fill& f = fills[i];
-            if (!f.box.overlaps(b)) continue;
-            for (std::size_t k = 0; k < f.fans.size(); ++k)
-                for (const Triangle& s : f.fans[k])
-                    if (!f.crossing[k] && intersect(s, t)) f.crossing[k] = true;
-        }
-    }
     for (Fill& f : fills)
         for (std::size_t k = 0; k < f.fans.size() && f.chosen < 0; ++k)
             if (!f.crossing[k]) f.chosen = int(k);
@@ -284,14 +326,16 @@ void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangle
 
 std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
                              const IndexVector<VertexIndex, PointIndex>& vertex_point,
-                             std::size_t max_edges, SmallHoleScope scope) {
+                             std::size_t max_edges, SmallHoleScope scope, const Execution& exec) {
+    // No progress from these loops: the phase's fraction is not theirs to report.
+    const Execution quiet{exec.threads, nullptr};
     const VertexPositions positions{points, vertex_point,
                                     vertex_point.empty() ? points.size() : vertex_point.size()};
     std::vector<Fill> fills;
     {
         const DirectedEdges edges(triangles, positions.vertex_count);
         const std::vector<std::uint32_t> next =
-            hole_successors(triangles, edges, positions.vertex_count);
+            hole_successors(edges, positions.vertex_count, quiet);
         const std::vector<std::uint8_t> open = scope == SmallHoleScope::PiecesClosedButForThem
                                                    ? on_open_piece(triangles, next, max_edges)
                                                    : std::vector<std::uint8_t>(next.size(), 0);
@@ -307,7 +351,7 @@ std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector
             fills.push_back(std::move(f));
         }
     }
-    choose_fans(fills, triangles, positions);
+    choose_fans(fills, triangles, positions, quiet);
     std::size_t closed = 0;
     for (const Fill& f : fills) {
         if (f.chosen < 0) continue;

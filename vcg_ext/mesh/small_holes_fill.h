@@ -4,6 +4,7 @@
 
 #include "index_types.h"
 #include "mesh/triangle_mesh.h"
+#include "parallel.h"
 #include "point_set.h"
 
 #include <cstddef>
@@ -30,10 +31,12 @@ enum class SmallHoleScope {
 /// the loop's winding, so the mesh stays edge- and vertex-manifold and coherently oriented; a
 /// 3-loop that is already a triangle (a lone triangle's outline) stays open. Vertex v lies at
 /// points[vertex_point[v]], or at points[v] when vertex_point is empty. Returns the number of
-/// loops closed. Deterministic (loops in order of their smallest vertex).
+/// loops closed. Deterministic (loops in order of their smallest vertex), the same for any thread
+/// count of `exec` (whose progress is not used).
 std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
                              const IndexVector<VertexIndex, PointIndex>& vertex_point = {},
                              std::size_t max_edges = kMaxFilledLoop,
-                             SmallHoleScope scope = SmallHoleScope::Every);
+                             SmallHoleScope scope = SmallHoleScope::Every,
+                             const Execution& exec = Execution{1, nullptr});
 
 } // namespace hrsr
