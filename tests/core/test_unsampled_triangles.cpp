@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace hrsr {
@@ -152,6 +153,46 @@ TEST(RemoveUnsampledTriangles, AnisotropicSamplingKeepsItsTriangles) {
     const std::size_t before = t.size();
     EXPECT_EQ(remove_unsampled_triangles(t, p, identity(p.size()), kRank, {}), 0u);
     EXPECT_EQ(t.size(), before);
+}
+
+// Sixteen grids side by side (vertices and triangles over several blocks of the parallel
+// loops), their triangles listed back to front: the closed holes reopen, the partly open ones
+// keep their cover, and the same triangles go for 1, 2 and 8 threads.
+TEST(RemoveUnsampledTriangles, AnyThreadCountRemovesTheSameTriangles) {
+    std::vector<Vec3> p;
+    std::vector<Triangle> t;
+    const ClosedHole h;
+    for (int copy = 0; copy < 16; ++copy) {
+        const auto first = std::uint32_t(p.size());
+        for (const Vec3& q : h.points) p.push_back(q + Vec3(50.0 * copy, 0, 0));
+        // Odd copies: two triangles between the hole's corners instead of the fan.
+        std::vector<Triangle> own(h.triangles.begin(),
+                                  copy % 2 ? h.triangles.begin() + std::ptrdiff_t(h.grid)
+                                           : h.triangles.end());
+        if (copy % 2) {
+            const std::uint32_t a = at(h.points, h.lo, h.lo), b = at(h.points, h.hi, h.lo),
+                                c = at(h.points, h.hi, h.hi), d = at(h.points, h.lo, h.hi);
+            own.insert(own.end(), {{a, b, c}, {a, c, d}});
+        }
+        for (const Triangle& f : own) t.push_back({f[0] + first, f[1] + first, f[2] + first});
+    }
+    std::reverse(t.begin(), t.end());
+    ASSERT_GT(p.size(), 20000u);
+    ClosedHole alone;
+    const std::size_t removed_alone = remove_unsampled_triangles(
+        alone.triangles, alone.points, identity(alone.points.size()), kRank, {1, nullptr});
+    std::vector<Triangle> one = t;
+    const std::size_t removed =
+        remove_unsampled_triangles(one, p, identity(p.size()), kRank, {1, nullptr});
+    EXPECT_GT(removed_alone, 40u);
+    EXPECT_EQ(removed, 8 * removed_alone); // what each closed hole alone loses
+    for (int threads : {2, 8}) {
+        std::vector<Triangle> many = t;
+        EXPECT_EQ(
+            remove_unsampled_triangles(many, p, identity(p.size()), kRank, {threads, nullptr}),
+            removed);
+        EXPECT_EQ(many, one) << threads << " threads";
+    }
 }
 
 } // namespace

@@ -17,6 +17,8 @@ namespace {
 // the kNN queries to the few vertices next to a long edge: twice the rank-th neighbour distance
 // is about 7.6 spacings for rank 46, and a vertex's shortest edge is about one spacing.
 constexpr double kScreen = 4.0;
+// Vertices or triangles per task of the parallel loops (cheap bodies).
+constexpr std::size_t kBlock = 16384;
 
 double length(const std::vector<Vec3>& points, PointIndex a, PointIndex b) {
     return (points[a.value()] - points[b.value()]).Norm();
@@ -33,6 +35,17 @@ public:
             const std::uint32_t t = corners_.corner[i] / 3;
             const Triangle& f = triangles_[t];
             if (f[0] == b || f[1] == b || f[2] == b) visit(t);
+        }
+    }
+    /// Calls visit(a, b) for the edges a → b of the triangles around v (an edge twice when two
+    /// of v's corners are on it, as in a triangle with v twice).
+    template <class Visit>
+    void edges_at(std::uint32_t v, Visit&& visit) const {
+        for (std::uint32_t i = corners_.begin(v); i < corners_.end(v); ++i) {
+            const std::uint32_t c = corners_.corner[i];
+            const Triangle& f = triangles_[c / 3];
+            visit(f[c % 3], f[(c % 3 + 1) % 3]);
+            visit(f[(c % 3 + 2) % 3], f[c % 3]);
         }
     }
     /// v is on a boundary edge of the mesh.
@@ -61,9 +74,9 @@ private:
 /// goes). Other overlong triangles
 /// stay: a hole that is still partly open, or a strip joining two pieces, is the data's and RsR's
 /// too.
-std::vector<std::uint8_t> hole_covers(const std::vector<Triangle>& triangles, std::size_t vertices,
+std::vector<std::uint8_t> hole_covers(const std::vector<Triangle>& triangles,
+                                      const EdgeTriangles& edges, std::size_t vertices,
                                       const std::vector<std::uint8_t>& overlong) {
-    const EdgeTriangles edges(triangles, vertices);
     std::vector<std::uint8_t> remove(triangles.size(), 0), seen(triangles.size(), 0);
     struct Cover {
         std::vector<std::uint32_t> triangles, vertices;
@@ -129,6 +142,58 @@ std::vector<std::uint8_t> hole_covers(const std::vector<Triangle>& triangles, st
     return remove;
 }
 
+// The vertices whose longest edge is over kScreen times their shortest, in order: those the
+// kNN reach is asked of. By parallel blocks of vertices, each writing its own flags.
+std::vector<std::uint32_t> screened(const EdgeTriangles& edges, const std::vector<Vec3>& points,
+                                    const IndexVector<VertexIndex, PointIndex>& vertex_point,
+                                    const Execution& exec) {
+    const std::size_t vertices = vertex_point.size();
+    std::vector<std::uint8_t> flag(vertices, 0);
+    parallel_for(
+        exec, (vertices + kBlock - 1) / kBlock,
+        [&](std::size_t block) {
+            const std::size_t end = std::min(vertices, (block + 1) * kBlock);
+            for (std::size_t v = block * kBlock; v < end; ++v) {
+                double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+                edges.edges_at(std::uint32_t(v), [&](std::uint32_t a, std::uint32_t b) {
+                    const double l =
+                        length(points, vertex_point[VertexIndex(a)], vertex_point[VertexIndex(b)]);
+                    shortest = std::min(shortest, l);
+                    longest = std::max(longest, l);
+                });
+                flag[v] = longest > kScreen * shortest;
+            }
+        },
+        1);
+    std::vector<std::uint32_t> queried;
+    for (std::uint32_t v = 0; v < vertices; ++v)
+        if (flag[v]) queried.push_back(v);
+    return queried;
+}
+
+// Per triangle: an edge is longer than the reach at one of its ends. By parallel blocks of
+// triangles.
+std::vector<std::uint8_t>
+overlong_triangles(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
+                   const IndexVector<VertexIndex, PointIndex>& vertex_point,
+                   const std::vector<double>& reach, const Execution& exec) {
+    std::vector<std::uint8_t> overlong(triangles.size(), 0);
+    parallel_for(
+        exec, (triangles.size() + kBlock - 1) / kBlock,
+        [&](std::size_t block) {
+            const std::size_t end = std::min(triangles.size(), (block + 1) * kBlock);
+            for (std::size_t t = block * kBlock; t < end; ++t)
+                for (int k = 0; k < 3 && !overlong[t]; ++k) {
+                    const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+                    const double l =
+                        length(points, vertex_point[VertexIndex(a)], vertex_point[VertexIndex(b)]);
+                    if (l > reach[a] || l > reach[b]) overlong[t] = 1;
+                }
+        },
+        1);
+    return overlong;
+}
+
 } // namespace
 
 std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
@@ -136,21 +201,10 @@ std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
                                        const IndexVector<VertexIndex, PointIndex>& vertex_point,
                                        int rank, const Execution& exec) {
     const std::size_t vertices = vertex_point.size();
-    std::vector<double> shortest(vertices, std::numeric_limits<double>::infinity());
-    std::vector<double> longest(vertices, 0);
-    for (const Triangle& t : triangles)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = t[k], b = t[(k + 1) % 3];
-            const double l =
-                length(points, vertex_point[VertexIndex(a)], vertex_point[VertexIndex(b)]);
-            for (std::uint32_t v : {a, b}) {
-                shortest[v] = std::min(shortest[v], l);
-                longest[v] = std::max(longest[v], l);
-            }
-        }
-    std::vector<std::uint32_t> queried;
-    for (std::uint32_t v = 0; v < vertices; ++v)
-        if (longest[v] > kScreen * shortest[v]) queried.push_back(v);
+    // No progress from the mesh loops (cheap; input_reach reports the phase's fraction).
+    const Execution quiet{exec.threads, nullptr};
+    const EdgeTriangles edges(triangles, vertices);
+    const std::vector<std::uint32_t> queried = screened(edges, points, vertex_point, quiet);
     if (queried.empty()) return 0;
 
     // reach[v]: constants::kOverlongFactor times the rank-th neighbour distance of v's point
@@ -161,17 +215,10 @@ std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
     std::vector<double> reach(vertices, std::numeric_limits<double>::infinity());
     for (std::size_t i = 0; i < queried.size(); ++i)
         reach[queried[i]] = constants::kOverlongFactor * distance[i];
-    std::vector<std::uint8_t> overlong(triangles.size(), 0);
-    bool any = false;
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        for (int k = 0; k < 3 && !overlong[t]; ++k) {
-            const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
-            const double l =
-                length(points, vertex_point[VertexIndex(a)], vertex_point[VertexIndex(b)]);
-            if (l > reach[a] || l > reach[b]) overlong[t] = any = true;
-        }
-    if (!any) return 0;
-    const std::vector<std::uint8_t> remove = hole_covers(triangles, vertices, overlong);
+    const std::vector<std::uint8_t> overlong =
+        overlong_triangles(triangles, points, vertex_point, reach, quiet);
+    if (std::find(overlong.begin(), overlong.end(), 1) == overlong.end()) return 0;
+    const std::vector<std::uint8_t> remove = hole_covers(triangles, edges, vertices, overlong);
     std::size_t kept = 0;
     for (std::size_t t = 0; t < triangles.size(); ++t)
         if (!remove[t]) triangles[kept++] = triangles[t];

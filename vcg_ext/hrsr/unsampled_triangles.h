@@ -20,7 +20,7 @@ namespace hrsr {
 /// on the mesh's boundary, with more than kMaxFilledLoop vertices (D-28 closes smaller loops):
 /// one new boundary loop, every vertex kept and manifold. Vertex v
 /// lies at points[vertex_point[v]]. Returns the number of triangles removed; the others keep
-/// their order. Deterministic.
+/// their order. Deterministic, the same for any thread count.
 std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
                                        const std::vector<Vec3>& points,
                                        const IndexVector<VertexIndex, PointIndex>& vertex_point,
