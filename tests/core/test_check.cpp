@@ -3,6 +3,7 @@
 #include "mesh/check.h"
 #include "mesh/self_intersections.h"
 #include "mesh/surface_distance.h"
+#include "mesh/triangle_grid.h"
 
 #include "fold_fixtures.h"
 #include "mesh_fixtures.h"
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 
 namespace hrsr {
 namespace {
@@ -209,6 +211,53 @@ TEST(Check, PiercingTriangleIsFoundInALargeMesh) {
     for (const TrianglePair& p : pairs) EXPECT_EQ(p.second, m.triangles.size() - 1);
     // The same pairs whatever the thread count.
     EXPECT_EQ(self_intersecting_pairs(m.positions, m.triangles, {1, nullptr}), pairs);
+}
+
+// Two overlapping spheres with degenerate faces, their triangles shuffled so that each cell
+// holds faces of many blocks of the grid's parallel loops: the grid files the same faces in the
+// same order, and the search finds the same pairs, for 1, 2 and 8 threads.
+TEST(Check, AnyThreadCountBuildsTheSameGridAndPairs) {
+    TestMesh m = testing::uv_sphere(120, 240);
+    append(m, testing::shifted(testing::uv_sphere(100, 200, 0.8), Vec3(0.9, 0.1, 0.05)));
+    std::uint64_t state = 1; // a fixed shuffle (Knuth's MMIX generator)
+    for (std::size_t i = m.triangles.size(); i > 1; --i) {
+        state = state * 6364136223846793005u + 1442695040888963407u;
+        std::swap(m.triangles[i - 1], m.triangles[(state >> 33) % i]);
+    }
+    const std::uint32_t a = add_vertex(m, Vec3(0, 0, 0)), b = add_vertex(m, Vec3(1, 1, 1)),
+                        c = add_vertex(m, Vec3(2, 2, 2));
+    m.triangles.insert(m.triangles.begin() + 1000, {a, b, c});  // collinear corners
+    m.triangles.insert(m.triangles.begin() + 30000, {a, a, b}); // a repeated corner
+    ASSERT_GT(m.triangles.size(), 80000u);
+    const TriangleGeometry g(m.positions, m.triangles);
+    const TriangleGrid one(g, {1, nullptr});
+    const std::vector<TrianglePair> pairs = one.all_pairs(g, {1, nullptr});
+    EXPECT_GT(pairs.size(), 100u);
+    // A cell lists its faces in increasing order (the sort is by cell, then face).
+    for (std::uint32_t f = 0; f < g.size(); f += 7) {
+        const Vec3& corner = g.position(g.triangle(f)[0]);
+        std::vector<std::uint32_t> in_cell;
+        one.query({corner, corner}, in_cell);
+        EXPECT_TRUE(std::adjacent_find(in_cell.begin(), in_cell.end(), std::greater_equal<>()) ==
+                    in_cell.end());
+        if (!g.degenerate(g.triangle(f))) {
+            EXPECT_TRUE(std::binary_search(in_cell.begin(), in_cell.end(), f));
+        }
+    }
+    for (int threads : {2, 8}) {
+        const Execution exec{threads, nullptr};
+        const TriangleGrid many(g, exec);
+        EXPECT_EQ(many.cell_size(), one.cell_size());
+        EXPECT_EQ(many.all_pairs(g, exec), pairs) << threads << " threads";
+        for (std::uint32_t f = 0; f < g.size(); f += 7) {
+            std::vector<std::uint32_t> filed_one, filed_many;
+            one.query(g.box(g.triangle(f)), filed_one);
+            many.query(g.box(g.triangle(f)), filed_many);
+            ASSERT_EQ(filed_many, filed_one) << "near face " << f << ", " << threads << " threads";
+        }
+    }
+    EXPECT_EQ(self_intersecting_pairs(m.positions, m.triangles, {8, nullptr}),
+              self_intersecting_pairs(m.positions, m.triangles, {1, nullptr}));
 }
 
 TEST(Check, TrianglesOfThePairsAreThoseVcglibFinds) {

@@ -1,37 +1,103 @@
 #include "mesh/triangle_grid.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace hrsr {
 
+namespace {
+
+// Faces or entries per task of the parallel loops below (cheap bodies).
+constexpr std::size_t kBlock = 16384;
+
+std::size_t blocks(std::size_t n) {
+    return (n + kBlock - 1) / kBlock;
+}
+
+} // namespace
+
 TriangleGrid::TriangleGrid(const TriangleGeometry& g, const Execution& exec) {
-    Box all{g.position(g.triangle(0)[0]), g.position(g.triangle(0)[0])};
-    double extent_sum = 0;
-    for (std::uint32_t f = 0; f < g.size(); ++f) {
-        const Box b = g.box(g.triangle(f));
-        all.add(b.lo);
-        all.add(b.hi);
-        const Vec3 d = b.hi - b.lo;
-        extent_sum += std::max(d[0], std::max(d[1], d[2]));
-    }
-    origin_ = all.lo;
-    const Vec3 size = all.hi - all.lo;
-    const double largest = std::max(size[0], std::max(size[1], size[2]));
-    // At most kMaxCellsPerAxis cells a side, so that a cell's index fits in 32 bits.
-    cell_ = std::max({2.0 * extent_sum / double(g.size()), largest / kMaxCellsPerAxis, 1e-300});
-    for (int k = 0; k < 3; ++k) cells_[k] = std::uint64_t(size[k] / cell_) + 1;
-    for (std::uint32_t f = 0; f < g.size(); ++f) {
-        if (exec.progress && f % 65536 == 0) // a chance to cancel in the serial part
-            exec.progress->update(0.0);      // the search below reports the fraction
-        if (!g.degenerate(g.triangle(f)))
-            for_each_cell(g.box(g.triangle(f)),
-                          [&](std::uint64_t c) { entries_.push_back(c << 32 | f); });
-    }
-    sort_by_cell(entries_);
+    // The loops report no progress (the search below reports the fraction); the calls between
+    // them are chances to cancel.
+    const Execution quiet{exec.threads, nullptr};
+    const auto cancel_point = [&] {
+        if (exec.progress) exec.progress->update(0.0);
+    };
+    size_cells(g, quiet);
+    cancel_point();
+    file_faces(g, quiet);
+    cancel_point();
+    sort_by_cell(entries_, quiet);
+    cancel_point();
     for (std::size_t e = 0; e < entries_.size(); ++e)
         if (e == 0 || cell(entries_[e]) != cell(entries_[e - 1]))
             cell_start_.push_back(std::uint32_t(e));
     cell_start_.push_back(std::uint32_t(entries_.size()));
+}
+
+// The boxes in parallel blocks; their extents are summed in face order, so that the cell size
+// (hence every result) does not depend on the thread count.
+void TriangleGrid::size_cells(const TriangleGeometry& g, const Execution& exec) {
+    const std::size_t n = g.size();
+    std::vector<double> extent(n);
+    std::vector<Box> block_box(blocks(n));
+    parallel_for(
+        exec, block_box.size(),
+        [&](std::size_t b) {
+            Box all = g.box(g.triangle(std::uint32_t(b * kBlock)));
+            for (std::size_t f = b * kBlock; f < std::min(n, (b + 1) * kBlock); ++f) {
+                const Box box = g.box(g.triangle(std::uint32_t(f)));
+                all.add(box.lo);
+                all.add(box.hi);
+                const Vec3 d = box.hi - box.lo;
+                extent[f] = std::max(d[0], std::max(d[1], d[2]));
+            }
+            block_box[b] = all;
+        },
+        1);
+    Box all = block_box[0];
+    for (const Box& b : block_box) {
+        all.add(b.lo);
+        all.add(b.hi);
+    }
+    double extent_sum = 0;
+    for (double e : extent) extent_sum += e;
+    origin_ = all.lo;
+    const Vec3 size = all.hi - all.lo;
+    const double largest = std::max(size[0], std::max(size[1], size[2]));
+    // At most kMaxCellsPerAxis cells a side, so that a cell's index fits in 32 bits.
+    cell_ = std::max({2.0 * extent_sum / double(n), largest / kMaxCellsPerAxis, 1e-300});
+    for (int k = 0; k < 3; ++k) cells_[k] = std::uint64_t(size[k] / cell_) + 1;
+}
+
+// Every non-degenerate face under each cell its box covers, in face order and each face's cells
+// in for_each_cell's order: blocks of faces file theirs in parallel (one pass over the
+// positions, the degeneracy test included), then the blocks' entries are joined in order.
+void TriangleGrid::file_faces(const TriangleGeometry& g, const Execution& exec) {
+    const std::size_t n = g.size();
+    std::vector<std::vector<std::uint64_t>> filed(blocks(n));
+    parallel_for(
+        exec, filed.size(),
+        [&](std::size_t b) {
+            for (std::size_t f = b * kBlock; f < std::min(n, (b + 1) * kBlock); ++f) {
+                const Triangle& t = g.triangle(std::uint32_t(f));
+                if (!g.degenerate(t))
+                    for_each_cell(g.box(t),
+                                  [&](std::uint64_t c) { filed[b].push_back(c << 32 | f); });
+            }
+        },
+        1);
+    std::vector<std::size_t> start(filed.size() + 1, 0);
+    for (std::size_t b = 0; b < filed.size(); ++b) start[b + 1] = start[b] + filed[b].size();
+    entries_.resize(start.back());
+    parallel_for(
+        exec, filed.size(),
+        [&](std::size_t b) {
+            std::copy(filed[b].begin(), filed[b].end(),
+                      entries_.begin() + std::ptrdiff_t(start[b]));
+            std::vector<std::uint64_t>().swap(filed[b]);
+        },
+        1);
 }
 
 std::vector<TrianglePair> TriangleGrid::all_pairs(const TriangleGeometry& g,
@@ -77,14 +143,33 @@ std::vector<TrianglePair> TriangleGrid::all_pairs(const TriangleGeometry& g,
 }
 
 // Entries come in face order; a stable radix sort on the cell (4 × 8 bits) leaves them sorted
-// by (cell, face) as std::sort would, in a fraction of its time.
-void TriangleGrid::sort_by_cell(std::vector<std::uint64_t>& entries) {
-    std::vector<std::uint64_t> buffer(entries.size());
+// by (cell, face) as std::sort would, in a fraction of its time. Each pass counts digits by
+// blocks in parallel, and each block scatters its entries after those of every earlier block
+// with the same digit: the order of the sequential sort for any thread count.
+void TriangleGrid::sort_by_cell(std::vector<std::uint64_t>& entries, const Execution& exec) {
+    const std::size_t n = entries.size();
+    std::vector<std::uint64_t> buffer(n);
+    std::vector<std::array<std::size_t, 256>> next(blocks(n)); // per block: its digits' slots
     for (int shift = 32; shift < 64; shift += 8) {
-        std::array<std::size_t, 257> start{};
-        for (std::uint64_t e : entries) ++start[((e >> shift) & 0xff) + 1];
-        for (int d = 0; d < 256; ++d) start[std::size_t(d) + 1] += start[std::size_t(d)];
-        for (std::uint64_t e : entries) buffer[start[(e >> shift) & 0xff]++] = e;
+        const auto digit = [shift](std::uint64_t e) { return std::size_t(e >> shift) & 0xff; };
+        parallel_for(
+            exec, next.size(),
+            [&](std::size_t b) {
+                next[b].fill(0);
+                for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i)
+                    ++next[b][digit(entries[i])];
+            },
+            1);
+        std::size_t slot = 0;
+        for (std::size_t d = 0; d < 256; ++d)
+            for (std::array<std::size_t, 256>& count : next) slot += std::exchange(count[d], slot);
+        parallel_for(
+            exec, next.size(),
+            [&](std::size_t b) {
+                for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i)
+                    buffer[next[b][digit(entries[i])]++] = entries[i];
+            },
+            1);
         entries.swap(buffer);
     }
 }

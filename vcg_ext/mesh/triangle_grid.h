@@ -94,7 +94,8 @@ private:
 // cells: the fold repair and removal file it again.
 class TriangleGrid {
 public:
-    /// Files every non-degenerate triangle of `g` (at least one triangle).
+    /// Files every non-degenerate triangle of `g` (at least one triangle); in parallel, the same
+    /// grid for any thread count.
     TriangleGrid(const TriangleGeometry& g, const Execution& exec);
 
     /// Every intersecting pair (i < j), sorted; each pair is tested in the first cell both
@@ -133,7 +134,11 @@ public:
 private:
     static constexpr double kMaxCellsPerAxis = 1600; // 1601³ < 2³²
 
-    static void sort_by_cell(std::vector<std::uint64_t>& entries);
+    /// The origin, the cell size and the number of cells a side.
+    void size_cells(const TriangleGeometry& g, const Execution& exec);
+    /// entries_, in face order.
+    void file_faces(const TriangleGeometry& g, const Execution& exec);
+    static void sort_by_cell(std::vector<std::uint64_t>& entries, const Execution& exec);
     using Cell = std::array<std::uint64_t, 3>;
     static std::uint64_t cell(std::uint64_t entry) { return entry >> 32; }
     static std::uint32_t face(std::uint64_t entry) { return std::uint32_t(entry); }
