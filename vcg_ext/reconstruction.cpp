@@ -11,6 +11,7 @@
 #include "mesh/flat_faces.h"
 #include "mesh/fold_removal.h"
 #include "mesh/fold_repair.h"
+#include "mesh/outward.h"
 #include "mesh/small_holes_fill.h"
 #include "preprocess/components.h"
 #include "preprocess/pca_normals.h"
@@ -78,20 +79,8 @@ CompactMesh<Point> compact(std::size_t points, std::vector<Triangle> triangles,
 void orient_outward(const std::vector<Vec3>& positions, const MeshStats& stats,
                     const std::vector<std::uint32_t>& component, Reconstruction& mesh,
                     ReconstructionReport& report) {
-    for (std::uint32_t c = 0; c < stats.components.size(); ++c) {
-        if (!stats.components[c].closed() ||
-            signed_volume(positions, mesh.triangles, component, c) >= 0)
-            continue;
-        ++report.flipped_components;
-        std::vector<std::uint8_t> flip_vertex(positions.size(), 0);
-        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-            if (component[t] != c) continue;
-            std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
-            for (std::uint32_t v : mesh.triangles[t]) flip_vertex[v] = 1;
-        }
-        for (std::size_t v = 0; v < positions.size(); ++v)
-            if (flip_vertex[v]) mesh.vertex_normals[v] = -mesh.vertex_normals[v];
-    }
+    report.flipped_components += turn_closed_components_outwards(
+        positions, stats, component, mesh.triangles, mesh.vertex_normals);
 }
 
 // The output: vertices at the cloud points they stand for, with their normals.

@@ -132,15 +132,18 @@ MeshStats measure_mesh(std::size_t n, const std::vector<Triangle>& triangles,
     return s;
 }
 
-double signed_volume(const std::vector<Vec3>& p, const std::vector<Triangle>& triangles,
-                     const std::vector<std::uint32_t>& component, std::uint32_t which) {
-    double volume = 0;
+// Each component's sum takes its triangles in order, as one pass per component would: a mesh of
+// many closed pieces no longer costs a pass over all triangles per piece (20M points: 55 pieces).
+std::vector<double> signed_volumes(const std::vector<Vec3>& p,
+                                   const std::vector<Triangle>& triangles,
+                                   const std::vector<std::uint32_t>& component, std::size_t count) {
+    std::vector<double> volume(count, 0.0);
     for (std::size_t t = 0; t < triangles.size(); ++t) {
-        if (component[t] != which) continue;
         const Vec3 &a = p[triangles[t][0]], &b = p[triangles[t][1]], &c = p[triangles[t][2]];
-        volume += a.dot(b ^ c);
+        volume[component[t]] += a.dot(b ^ c);
     }
-    return volume / 6.0;
+    for (double& v : volume) v /= 6.0;
+    return volume;
 }
 
 const ComponentTopology* largest_component(const MeshStats& mesh) {

@@ -44,9 +44,10 @@ MeshStats measure_mesh(std::size_t vertex_count, const std::vector<Triangle>& tr
                        std::vector<std::uint32_t>* triangle_component = nullptr,
                        const Execution& exec = Execution{1, nullptr});
 
-/// Signed volume enclosed by the triangles of one component (positive when they wind
-/// counter-clockwise seen from outside).
-double signed_volume(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
-                     const std::vector<std::uint32_t>& component, std::uint32_t which);
+/// Signed volume enclosed by the triangles of each of `count` components (positive when they wind
+/// counter-clockwise seen from outside), in one pass over the triangles.
+std::vector<double> signed_volumes(const std::vector<Vec3>& positions,
+                                   const std::vector<Triangle>& triangles,
+                                   const std::vector<std::uint32_t>& component, std::size_t count);
 
 } // namespace hrsr
