@@ -5,8 +5,8 @@
 
 namespace hrsr {
 
-// A pass over all triangles per closed piece (as this was first written) cost 20M points, with
-// 55 closed pieces, most of its 39 s measure.
+// One pass for all pieces: a pass per closed piece grew with pieces × triangles (55 closed pieces
+// on the 20M dragon sample).
 std::size_t turn_closed_components_outwards(const std::vector<Vec3>& positions,
                                             const MeshStats& stats,
                                             const std::vector<std::uint32_t>& component,
