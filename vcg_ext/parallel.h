@@ -4,6 +4,7 @@
 
 #include "progress.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 
@@ -24,5 +25,24 @@ void parallel_for(const Execution& exec, std::size_t n,
 
 /// Number of threads parallel_for would use.
 int thread_count(const Execution& exec);
+
+/// Indices per task for loops whose body is cheap (a few memory reads per index).
+inline constexpr std::size_t kCheapBlock = 16384;
+
+/// How many blocks of `block` consecutive indices [0, n) makes (the last may be shorter).
+inline std::size_t block_count(std::size_t n, std::size_t block) {
+    return (n + block - 1) / block;
+}
+
+/// Calls body(b, first, end) for every block b of [0, n), [first, end) its indices, one block per
+/// task, in parallel. Results gathered per block and joined in block order are the same for any
+/// thread count.
+template <class Body>
+void parallel_for_blocks(const Execution& exec, std::size_t n, std::size_t block,
+                         const Body& body) {
+    parallel_for(
+        exec, block_count(n, block),
+        [&](std::size_t b) { body(b, b * block, std::min(n, (b + 1) * block)); }, 1);
+}
 
 } // namespace hrsr

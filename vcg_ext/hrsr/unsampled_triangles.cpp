@@ -17,8 +17,6 @@ namespace {
 // the kNN queries to the few vertices next to a long edge: twice the rank-th neighbour distance
 // is about 7.6 spacings for rank 46, and a vertex's shortest edge is about one spacing.
 constexpr double kScreen = 4.0;
-// Vertices or triangles per task of the parallel loops (cheap bodies).
-constexpr std::size_t kBlock = 16384;
 
 double length(const std::vector<Vec3>& points, PointIndex a, PointIndex b) {
     return (points[a.value()] - points[b.value()]).Norm();
@@ -149,11 +147,9 @@ std::vector<std::uint32_t> screened(const EdgeTriangles& edges, const std::vecto
                                     const Execution& exec) {
     const std::size_t vertices = vertex_point.size();
     std::vector<std::uint8_t> flag(vertices, 0);
-    parallel_for(
-        exec, (vertices + kBlock - 1) / kBlock,
-        [&](std::size_t block) {
-            const std::size_t end = std::min(vertices, (block + 1) * kBlock);
-            for (std::size_t v = block * kBlock; v < end; ++v) {
+    parallel_for_blocks(
+        exec, vertices, kCheapBlock, [&](std::size_t, std::size_t first, std::size_t end) {
+            for (std::size_t v = first; v < end; ++v) {
                 double shortest = std::numeric_limits<double>::infinity(), longest = 0;
                 edges.edges_at(std::uint32_t(v), [&](std::uint32_t a, std::uint32_t b) {
                     const double l =
@@ -163,8 +159,7 @@ std::vector<std::uint32_t> screened(const EdgeTriangles& edges, const std::vecto
                 });
                 flag[v] = longest > kScreen * shortest;
             }
-        },
-        1);
+        });
     std::vector<std::uint32_t> queried;
     for (std::uint32_t v = 0; v < vertices; ++v)
         if (flag[v]) queried.push_back(v);
@@ -178,19 +173,16 @@ overlong_triangles(const std::vector<Triangle>& triangles, const std::vector<Vec
                    const IndexVector<VertexIndex, PointIndex>& vertex_point,
                    const std::vector<double>& reach, const Execution& exec) {
     std::vector<std::uint8_t> overlong(triangles.size(), 0);
-    parallel_for(
-        exec, (triangles.size() + kBlock - 1) / kBlock,
-        [&](std::size_t block) {
-            const std::size_t end = std::min(triangles.size(), (block + 1) * kBlock);
-            for (std::size_t t = block * kBlock; t < end; ++t)
+    parallel_for_blocks(
+        exec, triangles.size(), kCheapBlock, [&](std::size_t, std::size_t first, std::size_t end) {
+            for (std::size_t t = first; t < end; ++t)
                 for (int k = 0; k < 3 && !overlong[t]; ++k) {
                     const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
                     const double l =
                         length(points, vertex_point[VertexIndex(a)], vertex_point[VertexIndex(b)]);
                     if (l > reach[a] || l > reach[b]) overlong[t] = 1;
                 }
-        },
-        1);
+        });
     return overlong;
 }
 

@@ -55,16 +55,13 @@ Fans compute_fans(std::size_t n, const std::vector<Triangle>& triangles, const E
     fans.fan_count.assign(n, 0);
     // Blocks of vertices: each writes only its vertices' counts and corners.
     constexpr std::size_t kBlock = 4096;
-    parallel_for(
-        {exec.threads, nullptr}, (n + kBlock - 1) / kBlock,
-        [&](std::size_t block) {
+    parallel_for_blocks(
+        {exec.threads, nullptr}, n, kBlock, [&](std::size_t, std::size_t first, std::size_t end) {
             FanNumbering numbering(triangles, fans);
-            const std::uint32_t end = std::uint32_t(std::min(n, (block + 1) * kBlock));
-            for (std::uint32_t v = std::uint32_t(block * kBlock); v < end; ++v)
+            for (std::uint32_t v = std::uint32_t(first); v < end; ++v)
                 if (at.end(v) > at.begin(v))
                     numbering.number(v, at.corner.data() + at.begin(v), at.end(v) - at.begin(v));
-        },
-        1);
+        });
     return fans;
 }
 

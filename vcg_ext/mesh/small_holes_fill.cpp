@@ -15,8 +15,6 @@ namespace {
 constexpr std::uint32_t kNone = 0xffffffffu;
 constexpr std::uint32_t kMany = 0xfffffffeu;
 const double kMinFanAngle = M_PI / 180.0;
-// Vertices or triangles per task of the parallel loops (cheap bodies).
-constexpr std::size_t kBlock = 16384;
 
 /// Vertex v at points[vertex_point[v]] (or points[v] when vertex_point is empty): HRsR's
 /// vertices stand for cloud points, and a copy of their positions would add to the peak.
@@ -88,14 +86,11 @@ private:
 std::vector<std::uint32_t> hole_successors(const DirectedEdges& edges, std::size_t vertices,
                                            const Execution& exec) {
     std::vector<std::uint32_t> next(vertices, kNone);
-    parallel_for(
-        exec, (vertices + kBlock - 1) / kBlock,
-        [&](std::size_t block) {
-            const std::size_t end = std::min(vertices, (block + 1) * kBlock);
-            for (std::size_t b = block * kBlock; b < end; ++b)
-                next[b] = edges.hole_successor(std::uint32_t(b));
-        },
-        1);
+    parallel_for_blocks(exec, vertices, kCheapBlock,
+                        [&](std::size_t, std::size_t first, std::size_t end) {
+                            for (std::size_t b = first; b < end; ++b)
+                                next[b] = edges.hole_successor(std::uint32_t(b));
+                        });
     return next;
 }
 
@@ -252,14 +247,13 @@ template <class Intersect>
 void mark_crossed_by_mesh(std::vector<Fill>& fills, const std::vector<Triangle>& triangles,
                           const FillGrid& grid, const Intersect& intersect, const Execution& exec) {
     using Hit = std::pair<std::uint32_t, std::uint32_t>; // fill, fan
-    std::vector<std::vector<Hit>> hits((triangles.size() + kBlock - 1) / kBlock);
-    parallel_for(
-        exec, hits.size(),
-        [&](std::size_t block) {
+    std::vector<std::vector<Hit>> hits(block_count(triangles.size(), kCheapBlock));
+    parallel_for_blocks(
+        exec, triangles.size(), kCheapBlock,
+        [&](std::size_t block, std::size_t first, std::size_t end) {
             std::vector<std::uint32_t> near;
             std::vector<Hit>& found = hits[block];
-            const std::size_t end = std::min(triangles.size(), (block + 1) * kBlock);
-            for (std::size_t t = block * kBlock; t < end; ++t) {
+            for (std::size_t t = first; t < end; ++t) {
                 const Box b = grid.box(triangles[t]);
                 grid.near(b, near);
                 for (std::uint32_t i : near) {
@@ -276,8 +270,7 @@ void mark_crossed_by_mesh(std::vector<Fill>& fills, const std::vector<Triangle>&
                     }
                 }
             }
-        },
-        1);
+        });
     for (const std::vector<Hit>& found : hits)
         for (const auto& [i, k] : found) fills[i].crossing[k] = true;
 }

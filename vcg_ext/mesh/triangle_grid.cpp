@@ -5,17 +5,6 @@
 
 namespace hrsr {
 
-namespace {
-
-// Faces or entries per task of the parallel loops below (cheap bodies).
-constexpr std::size_t kBlock = 16384;
-
-std::size_t blocks(std::size_t n) {
-    return (n + kBlock - 1) / kBlock;
-}
-
-} // namespace
-
 TriangleGrid::TriangleGrid(const TriangleGeometry& g, const Execution& exec) {
     // The loops report no progress (the search below reports the fraction); the calls between
     // them are chances to cancel.
@@ -40,21 +29,19 @@ TriangleGrid::TriangleGrid(const TriangleGeometry& g, const Execution& exec) {
 void TriangleGrid::size_cells(const TriangleGeometry& g, const Execution& exec) {
     const std::size_t n = g.size();
     std::vector<double> extent(n);
-    std::vector<Box> block_box(blocks(n));
-    parallel_for(
-        exec, block_box.size(),
-        [&](std::size_t b) {
-            Box all = g.box(g.triangle(std::uint32_t(b * kBlock)));
-            for (std::size_t f = b * kBlock; f < std::min(n, (b + 1) * kBlock); ++f) {
-                const Box box = g.box(g.triangle(std::uint32_t(f)));
-                all.add(box.lo);
-                all.add(box.hi);
-                const Vec3 d = box.hi - box.lo;
-                extent[f] = std::max(d[0], std::max(d[1], d[2]));
-            }
-            block_box[b] = all;
-        },
-        1);
+    std::vector<Box> block_box(block_count(n, kCheapBlock));
+    parallel_for_blocks(exec, n, kCheapBlock,
+                        [&](std::size_t b, std::size_t first, std::size_t end) {
+                            Box all = g.box(g.triangle(std::uint32_t(first)));
+                            for (std::size_t f = first; f < end; ++f) {
+                                const Box box = g.box(g.triangle(std::uint32_t(f)));
+                                all.add(box.lo);
+                                all.add(box.hi);
+                                const Vec3 d = box.hi - box.lo;
+                                extent[f] = std::max(d[0], std::max(d[1], d[2]));
+                            }
+                            block_box[b] = all;
+                        });
     Box all = block_box[0];
     for (const Box& b : block_box) {
         all.add(b.lo);
@@ -75,18 +62,16 @@ void TriangleGrid::size_cells(const TriangleGeometry& g, const Execution& exec) 
 // positions, the degeneracy test included), then the blocks' entries are joined in order.
 void TriangleGrid::file_faces(const TriangleGeometry& g, const Execution& exec) {
     const std::size_t n = g.size();
-    std::vector<std::vector<std::uint64_t>> filed(blocks(n));
-    parallel_for(
-        exec, filed.size(),
-        [&](std::size_t b) {
-            for (std::size_t f = b * kBlock; f < std::min(n, (b + 1) * kBlock); ++f) {
+    std::vector<std::vector<std::uint64_t>> filed(block_count(n, kCheapBlock));
+    parallel_for_blocks(
+        exec, n, kCheapBlock, [&](std::size_t b, std::size_t first, std::size_t end) {
+            for (std::size_t f = first; f < end; ++f) {
                 const Triangle& t = g.triangle(std::uint32_t(f));
                 if (!g.degenerate(t))
                     for_each_cell(g.box(t),
                                   [&](std::uint64_t c) { filed[b].push_back(c << 32 | f); });
             }
-        },
-        1);
+        });
     std::vector<std::size_t> start(filed.size() + 1, 0);
     for (std::size_t b = 0; b < filed.size(); ++b) start[b + 1] = start[b] + filed[b].size();
     entries_.resize(start.back());
@@ -149,27 +134,23 @@ std::vector<TrianglePair> TriangleGrid::all_pairs(const TriangleGeometry& g,
 void TriangleGrid::sort_by_cell(std::vector<std::uint64_t>& entries, const Execution& exec) {
     const std::size_t n = entries.size();
     std::vector<std::uint64_t> buffer(n);
-    std::vector<std::array<std::size_t, 256>> next(blocks(n)); // per block: its digits' slots
+    std::vector<std::array<std::size_t, 256>> next(block_count(n, kCheapBlock)); // per block
     for (int shift = 32; shift < 64; shift += 8) {
         const auto digit = [shift](std::uint64_t e) { return std::size_t(e >> shift) & 0xff; };
-        parallel_for(
-            exec, next.size(),
-            [&](std::size_t b) {
-                next[b].fill(0);
-                for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i)
-                    ++next[b][digit(entries[i])];
-            },
-            1);
+        parallel_for_blocks(exec, n, kCheapBlock,
+                            [&](std::size_t b, std::size_t first, std::size_t end) {
+                                next[b].fill(0);
+                                for (std::size_t i = first; i < end; ++i)
+                                    ++next[b][digit(entries[i])];
+                            });
         std::size_t slot = 0;
         for (std::size_t d = 0; d < 256; ++d)
             for (std::array<std::size_t, 256>& count : next) slot += std::exchange(count[d], slot);
-        parallel_for(
-            exec, next.size(),
-            [&](std::size_t b) {
-                for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i)
-                    buffer[next[b][digit(entries[i])]++] = entries[i];
-            },
-            1);
+        parallel_for_blocks(exec, n, kCheapBlock,
+                            [&](std::size_t b, std::size_t first, std::size_t end) {
+                                for (std::size_t i = first; i < end; ++i)
+                                    buffer[next[b][digit(entries[i])]++] = entries[i];
+                            });
         entries.swap(buffer);
     }
 }
