@@ -54,8 +54,9 @@ std::vector<Doc> docs() {
          true},
         {"n", "n (shortest handle)", "point spacings", num(d.rsr.min_handle_loop),
          "Topology: a tunnel or handle is kept when the loop around it is at least n point "
-         "spacings long; shorter gaps are taken for slits or noise and left open. The same "
-         "value works at every density and collapse ratio.",
+         "spacings long; shorter gaps are taken for slits or noise: no handle across them, "
+         "and HRsR closes them where they are the only holes of an otherwise closed surface. "
+         "The same value works at every density and collapse ratio.",
          true},
         {"distance", "Distance", "choice",
          kDistances[p.distance == DistanceMode::Euclidean ? 1 : 0],

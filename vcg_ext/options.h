@@ -51,7 +51,8 @@ struct RsrOptions {
     /// n: the shortest loop around a handle that is kept, in point spacings of the input (D-27).
     /// A handle edge only joins points more than n graph hops apart on the full cloud, n·sqrt(p)
     /// on HRsR's coarse cloud (p = its share of the points); §5.6 counted raw hops of whatever
-    /// cloud RsR saw. Shorter loops are taken for slits and noise and left open.
+    /// cloud RsR saw. Shorter loops are taken for slits and noise, not handles; HRsR closes them
+    /// on coarse pieces that are closed but for them (D-39).
     double min_handle_loop = 20;
     /// Handle groups: −1 = as many as found, 0 = none (genus 0), g = at most g (§5.9).
     int handles = -1;

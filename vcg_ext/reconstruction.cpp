@@ -274,6 +274,17 @@ void take_rsr_stats(const rsr::CloudMesh& m, ReconstructionReport& report) {
     rsr::add_timings(report.timings, m.timings);
 }
 
+// D-39: the longest loop that is a pinhole of a closed coarse piece: five edges (D-28), or, when
+// more, the hop limit of RsR's handles on the coarse cloud (D-27; the smallest of its
+// components'): a loop no longer than the loop a handle must close is a gap RsR took for a slit
+// and left open, not a tunnel (the 5k triple torus with 0.1 % noise at p = 1/8 came out of RsR
+// with its three handles and one 6-edge hole, at a hop limit of 7).
+std::size_t coarse_pinhole_edges(const std::vector<std::size_t>& handle_hop_limits) {
+    if (handle_hop_limits.empty()) return kMaxFilledLoop;
+    return std::max(kMaxFilledLoop,
+                    *std::min_element(handle_hop_limits.begin(), handle_hop_limits.end()));
+}
+
 // RsR's mesh of the coarse cloud, its non-manifold vertices split (§5.8), as the re-expansion
 // takes it.
 CoarseMesh coarse_mesh_of(const PreparedCloud& coarse, std::vector<Triangle> triangles,
@@ -286,12 +297,13 @@ CoarseMesh coarse_mesh_of(const PreparedCloud& coarse, std::vector<Triangle> tri
         coarse_mesh.positions.push_back(coarse.positions[p.value()]);
     }
     coarse_mesh.triangles = std::move(m.triangles);
-    // D-39: a coarse piece closed but for loops of at most five edges is a closed surface whose
-    // coarse sampling left pinholes, which the re-expansion would widen into slits D-28 cannot
-    // close. Pieces with a longer border (open scans) keep their loops: D-30 and D-28 decide
+    // D-39: a coarse piece closed but for short loops (coarse_pinhole_edges) is a closed surface
+    // whose coarse sampling left pinholes, which the re-expansion would widen into slits D-28
+    // cannot close. Pieces with a longer border (open scans) keep their loops: D-30 and D-28 decide
     // about those on the fine mesh.
     report.coarse_small_holes_filled =
-        fill_small_holes(coarse_mesh.triangles, coarse_mesh.positions, {}, kMaxFilledLoop,
+        fill_small_holes(coarse_mesh.triangles, coarse_mesh.positions, {},
+                         coarse_pinhole_edges(report.handle_hop_limits),
                          SmallHoleScope::PiecesClosedButForThem, exec);
     return coarse_mesh;
 }
