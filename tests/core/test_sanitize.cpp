@@ -204,5 +204,37 @@ TEST(NearDuplicates, GridSearchIsExactAtTheRealTolerance) {
     EXPECT_LT(merged, 500u);
 }
 
+// The exact duplicates are found by a parallel sort (issue 20): 200,000 points, every tenth
+// repeating an earlier one and every 25th 1e-13 off one (D-25 merges it at 1e-11 of the diagonal)
+// give the same fates, representatives and cloud for any thread count.
+TEST(Sanitize, AnyThreadCountMergesTheSameDuplicates) {
+    std::mt19937 random(24);
+    std::uniform_real_distribution<double> where(-1, 1);
+    PointSet s;
+    for (std::size_t i = 0; i < 200000; ++i) {
+        std::uniform_int_distribution<std::size_t> earlier(0, i == 0 ? 0 : i - 1);
+        if (i % 10 == 9)
+            s.positions.push_back(s.positions[earlier(random)]);
+        else if (i % 25 == 24)
+            s.positions.push_back(s.positions[earlier(random)] + Vec3(1e-13, 0, 0));
+        else
+            s.positions.emplace_back(where(random), where(random), where(random));
+        s.normals.emplace_back(0, 0, 1);
+    }
+    PreprocessReport one;
+    const SanitizedCloud first = sanitize(s, {}, one);
+    EXPECT_EQ(one.count(PointFate::Duplicate), 200000u / 10 + 200000u / 25 - 200000u / 50);
+    for (int threads : {2, 8}) {
+        PreprocessReport many;
+        const SanitizedCloud c = sanitize(s, {}, many, {threads, nullptr});
+        EXPECT_EQ(many.fate, one.fate) << threads;
+        EXPECT_EQ(many.duplicate_of, one.duplicate_of) << threads;
+        EXPECT_EQ(many.warnings, one.warnings) << threads;
+        EXPECT_EQ(c.input_index.values(), first.input_index.values()) << threads;
+        EXPECT_EQ(c.positions, first.positions) << threads;
+        EXPECT_EQ(c.normals, first.normals) << threads;
+    }
+}
+
 } // namespace
 } // namespace hrsr
