@@ -37,27 +37,32 @@ std::string unusable_normals_reason(const PointSet& input, const std::vector<Poi
            " zero-length input normals";
 }
 
-// Exact duplicates (D-3): the first occurrence represents all equal points.
+// Exact duplicates (D-3): the first occurrence represents all equal points. The points are
+// sorted as records with their coordinates (twice as fast as indices compared through the
+// positions, measured on the 3.2M dragon); (position, index) orders every pair of points, so
+// the parallel sort gives the sequential order for any thread count.
 void merge_duplicates(const PointSet& input, const Execution& exec, PreprocessReport& report) {
-    std::vector<std::uint32_t> order;
-    for (std::uint32_t i = 0; i < input.size(); ++i)
-        if (report.fate[i] == PointFate::Kept) order.push_back(i);
-    const auto& p = input.positions;
-    auto less = [&p](std::uint32_t a, std::uint32_t b) {
-        if (p[a][0] != p[b][0]) return p[a][0] < p[b][0];
-        if (p[a][1] != p[b][1]) return p[a][1] < p[b][1];
-        if (p[a][2] != p[b][2]) return p[a][2] < p[b][2];
-        return a < b;
+    struct Record {
+        Vec3 p;
+        std::uint32_t index;
     };
-    // (position, index) orders every pair of points, so the parallel sort gives the sequential
-    // order for any thread count.
+    std::vector<Record> order;
+    for (std::uint32_t i = 0; i < input.size(); ++i)
+        if (report.fate[i] == PointFate::Kept) order.push_back({input.positions[i], i});
+    auto less = [](const Record& a, const Record& b) {
+        if (a.p[0] != b.p[0]) return a.p[0] < b.p[0];
+        if (a.p[1] != b.p[1]) return a.p[1] < b.p[1];
+        if (a.p[2] != b.p[2]) return a.p[2] < b.p[2];
+        return a.index < b.index;
+    };
     __gnu_parallel::sort(order.begin(), order.end(), less,
                          __gnu_parallel::balanced_quicksort_tag(thread_count(exec)));
     for (std::size_t s = 1; s < order.size(); ++s) {
-        const std::uint32_t prev = order[s - 1], cur = order[s];
-        if (p[prev] == p[cur]) {
-            report.fate[cur] = PointFate::Duplicate;
-            report.duplicate_of[cur] = report.duplicate_of[prev]; // runs are sorted by index
+        const Record &prev = order[s - 1], &cur = order[s];
+        if (prev.p == cur.p) {
+            report.fate[cur.index] = PointFate::Duplicate;
+            report.duplicate_of[cur.index] =
+                report.duplicate_of[prev.index]; // runs sorted by index
         }
     }
 }
@@ -84,9 +89,9 @@ Normalisation bounding_box_normalisation(const std::vector<Vec3>& points, double
 // at angle 0 whatever their direction and tore the surface (measured: a 3k sphere with every point
 // doubled at 1e-12 x the diagonal came out as 566 pieces; at 1e-11 with 13 boundary edges; from
 // 1e-10 on, closed).
-void merge_near_duplicates(SanitizedCloud& cloud, PreprocessReport& report) {
+void merge_near_duplicates(SanitizedCloud& cloud, const Execution& exec, PreprocessReport& report) {
     const std::vector<std::uint32_t> representative =
-        near_duplicate_representatives(cloud.positions, constants::kNearDuplicateDistance);
+        near_duplicate_representatives(cloud.positions, constants::kNearDuplicateDistance, exec);
     std::size_t merged = 0;
     for (std::size_t i = 0; i < representative.size(); ++i) merged += representative[i] != i;
     if (merged == 0) return; // the usual case: no copy of the cloud
@@ -177,7 +182,7 @@ SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
                             for (std::size_t i = first; i < end; ++i)
                                 cloud.positions[i] = (cloud.positions[i] - t.centre) * t.scale;
                         });
-    merge_near_duplicates(cloud, report);
+    merge_near_duplicates(cloud, {exec.threads, nullptr}, report);
     return cloud;
 }
 
