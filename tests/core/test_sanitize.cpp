@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -202,6 +203,93 @@ TEST(NearDuplicates, GridSearchIsExactAtTheRealTolerance) {
     EXPECT_EQ(fast, exhaustive);
     EXPECT_GT(merged, 100u); // both outcomes occur
     EXPECT_LT(merged, 500u);
+}
+
+// The representatives of every point, found by brute force along a sort by x (for clouds too
+// large to compare all pairs).
+std::vector<std::uint32_t> representatives_by_sweep(const std::vector<Vec3>& points,
+                                                    double tolerance) {
+    std::vector<std::uint32_t> by_x(points.size()), representative(points.size());
+    for (std::uint32_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
+    std::sort(by_x.begin(), by_x.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return points[a][0] < points[b][0]; });
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+        representative[i] = i;
+        const auto first =
+            std::lower_bound(by_x.begin(), by_x.end(), points[i][0] - tolerance,
+                             [&](std::uint32_t a, double x) { return points[a][0] < x; });
+        for (auto r = first; r != by_x.end() && points[*r][0] <= points[i][0] + tolerance; ++r)
+            if (*r < representative[i] && representative[*r] == *r &&
+                (points[*r] - points[i]).SquaredNorm() <= tolerance * tolerance)
+                representative[i] = *r;
+    }
+    return representative;
+}
+
+// The parallel screen (near_screen.h) keeps every pair within the tolerance, also across the
+// faces of its cells (a million tolerances wide) and at their corners: 40,000 points, a fifth
+// of them paired at just under or just over the tolerance across a face, at 1, 2 and 8 threads.
+TEST(NearDuplicates, ScreenedSearchIsExactAcrossTheScreensCells) {
+    const double tolerance = constants::kNearDuplicateDistance, face = 1e6 * tolerance;
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> where(-0.5, 0.5), off(-2, 2);
+    std::uniform_int_distribution<int> pick(0, 3);
+    std::vector<Vec3> points;
+    while (points.size() < 40000) {
+        Vec3 p(where(random), where(random), where(random));
+        points.push_back(p);
+        if (points.size() % 5 != 0) continue;
+        const int axes = 1 + pick(random) % 3; // a face, an edge or a corner of a cell
+        Vec3 q = p;
+        for (int axis = 0; axis < axes; ++axis) {
+            p[axis] = std::round(p[axis] / face) * face + off(random) * tolerance;
+            const double step =
+                tolerance / std::sqrt(double(axes)) * (pick(random) < 2 ? 0.999 : 1.001);
+            q[axis] = p[axis] + (p[axis] < std::round(p[axis] / face) * face ? step : -step);
+        }
+        points.back() = p;
+        points.push_back(q);
+    }
+    const std::vector<std::uint32_t> expected = representatives_by_sweep(points, tolerance);
+    std::size_t merged = 0;
+    for (std::uint32_t i = 0; i < expected.size(); ++i) merged += expected[i] != i;
+    EXPECT_GT(merged, 1000u);
+    EXPECT_LT(merged, 7000u);
+    for (int threads : {1, 2, 8})
+        EXPECT_EQ(near_duplicate_representatives(points, tolerance, {threads, nullptr}), expected)
+            << threads << " threads";
+}
+
+// The exact duplicates are found by a parallel sort (issue 20): 200,000 points, every tenth
+// repeating an earlier one and every 25th 1e-13 off one (D-25 merges it at 1e-11 of the diagonal)
+// give the same fates, representatives and cloud for any thread count.
+TEST(Sanitize, AnyThreadCountMergesTheSameDuplicates) {
+    std::mt19937 random(24);
+    std::uniform_real_distribution<double> where(-1, 1);
+    PointSet s;
+    for (std::size_t i = 0; i < 200000; ++i) {
+        std::uniform_int_distribution<std::size_t> earlier(0, i == 0 ? 0 : i - 1);
+        if (i % 10 == 9)
+            s.positions.push_back(s.positions[earlier(random)]);
+        else if (i % 25 == 24)
+            s.positions.push_back(s.positions[earlier(random)] + Vec3(1e-13, 0, 0));
+        else
+            s.positions.emplace_back(where(random), where(random), where(random));
+        s.normals.emplace_back(0, 0, 1);
+    }
+    PreprocessReport one;
+    const SanitizedCloud first = sanitize(s, {}, one);
+    EXPECT_EQ(one.count(PointFate::Duplicate), 200000u / 10 + 200000u / 25 - 200000u / 50);
+    for (int threads : {2, 8}) {
+        PreprocessReport many;
+        const SanitizedCloud c = sanitize(s, {}, many, {threads, nullptr});
+        EXPECT_EQ(many.fate, one.fate) << threads;
+        EXPECT_EQ(many.duplicate_of, one.duplicate_of) << threads;
+        EXPECT_EQ(many.warnings, one.warnings) << threads;
+        EXPECT_EQ(c.input_index.values(), first.input_index.values()) << threads;
+        EXPECT_EQ(c.positions, first.positions) << threads;
+        EXPECT_EQ(c.normals, first.normals) << threads;
+    }
 }
 
 } // namespace

@@ -1,7 +1,10 @@
 #include "preprocess/near_duplicates.h"
 
+#include "preprocess/near_screen.h"
+
 #include <array>
 #include <cmath>
+#include <numeric>
 
 namespace hrsr {
 
@@ -26,10 +29,10 @@ std::uint64_t hash_of(const Cell& c) {
 // probe).
 class CellTable {
 public:
-    CellTable(const std::vector<Vec3>& positions, double width)
+    CellTable(const std::vector<Vec3>& positions, double width, std::size_t points)
         : positions_(positions), width_(width) {
         std::size_t capacity = 16;
-        while (capacity < 2 * positions.size()) capacity *= 2;
+        while (capacity < 2 * points) capacity *= 2;
         slots_.assign(capacity, {kNone, 0});
         mask_ = capacity - 1;
     }
@@ -75,9 +78,14 @@ private:
 } // namespace
 
 std::vector<std::uint32_t> near_duplicate_representatives(const std::vector<Vec3>& positions,
-                                                          double tolerance) {
+                                                          double tolerance, const Execution& exec) {
     const std::uint32_t n = std::uint32_t(positions.size());
     std::vector<std::uint32_t> representative(n);
+    std::iota(representative.begin(), representative.end(), 0u);
+    // Only the screened points can be merged or represent another one: a point within the
+    // tolerance of any other point is screened with it, so they meet each other here in the
+    // order given, as in a search over all points.
+    const std::vector<std::uint32_t> screened = near_point_candidates(positions, tolerance, exec);
     // Representatives only, chained per cell: head of the cell -> next[...] -> ... -> kNone.
     std::vector<std::uint32_t> next(n, kNone);
     const double squared = tolerance * tolerance;
@@ -88,8 +96,8 @@ std::vector<std::uint32_t> near_duplicate_representatives(const std::vector<Vec3
     // rounded quotient, never rounds across a cell's middle the wrong way. Points within 1e-6
     // of the middle look on both sides anyway (cheap insurance).
     const double width = 2 * tolerance;
-    CellTable cells(positions, width);
-    for (std::uint32_t i = 0; i < n; ++i) {
+    CellTable cells(positions, width, screened.size());
+    for (std::uint32_t i : screened) {
         const Vec3& p = positions[i];
         const Cell cell = cells.cell_of(p);
         std::array<std::int64_t, 3> low, high; // cell offsets to search, per axis

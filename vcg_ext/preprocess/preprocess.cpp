@@ -156,7 +156,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     PreparedCloud cloud;
     {
         Phase phase(exec, report, "validation");
-        SanitizedCloud clean = sanitize(input, options, report);
+        SanitizedCloud clean = sanitize(input, options, report, exec);
         cloud.input_index = std::move(clean.input_index);
         cloud.positions = std::move(clean.positions);
         cloud.normals = std::move(clean.normals);

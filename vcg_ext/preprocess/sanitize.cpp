@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <parallel/algorithm>
 #include <string>
 
 namespace hrsr {
@@ -36,24 +37,32 @@ std::string unusable_normals_reason(const PointSet& input, const std::vector<Poi
            " zero-length input normals";
 }
 
-// Exact duplicates (D-3): the first occurrence represents all equal points.
-void merge_duplicates(const PointSet& input, PreprocessReport& report) {
-    std::vector<std::uint32_t> order;
-    for (std::uint32_t i = 0; i < input.size(); ++i)
-        if (report.fate[i] == PointFate::Kept) order.push_back(i);
-    const auto& p = input.positions;
-    auto less = [&p](std::uint32_t a, std::uint32_t b) {
-        if (p[a][0] != p[b][0]) return p[a][0] < p[b][0];
-        if (p[a][1] != p[b][1]) return p[a][1] < p[b][1];
-        if (p[a][2] != p[b][2]) return p[a][2] < p[b][2];
-        return a < b;
+// Exact duplicates (D-3): the first occurrence represents all equal points. The points are
+// sorted as records with their coordinates (twice as fast as indices compared through the
+// positions, measured on the 3.2M dragon); (position, index) orders every pair of points, so
+// the parallel sort gives the sequential order for any thread count.
+void merge_duplicates(const PointSet& input, const Execution& exec, PreprocessReport& report) {
+    struct Record {
+        Vec3 p;
+        std::uint32_t index;
     };
-    std::sort(order.begin(), order.end(), less);
+    std::vector<Record> order;
+    for (std::uint32_t i = 0; i < input.size(); ++i)
+        if (report.fate[i] == PointFate::Kept) order.push_back({input.positions[i], i});
+    auto less = [](const Record& a, const Record& b) {
+        if (a.p[0] != b.p[0]) return a.p[0] < b.p[0];
+        if (a.p[1] != b.p[1]) return a.p[1] < b.p[1];
+        if (a.p[2] != b.p[2]) return a.p[2] < b.p[2];
+        return a.index < b.index;
+    };
+    __gnu_parallel::sort(order.begin(), order.end(), less,
+                         __gnu_parallel::balanced_quicksort_tag(thread_count(exec)));
     for (std::size_t s = 1; s < order.size(); ++s) {
-        const std::uint32_t prev = order[s - 1], cur = order[s];
-        if (p[prev] == p[cur]) {
-            report.fate[cur] = PointFate::Duplicate;
-            report.duplicate_of[cur] = report.duplicate_of[prev]; // runs are sorted by index
+        const Record &prev = order[s - 1], &cur = order[s];
+        if (prev.p == cur.p) {
+            report.fate[cur.index] = PointFate::Duplicate;
+            report.duplicate_of[cur.index] =
+                report.duplicate_of[prev.index]; // runs sorted by index
         }
     }
 }
@@ -80,26 +89,26 @@ Normalisation bounding_box_normalisation(const std::vector<Vec3>& points, double
 // at angle 0 whatever their direction and tore the surface (measured: a 3k sphere with every point
 // doubled at 1e-12 x the diagonal came out as 566 pieces; at 1e-11 with 13 boundary edges; from
 // 1e-10 on, closed).
-void merge_near_duplicates(SanitizedCloud& cloud, PreprocessReport& report) {
+void merge_near_duplicates(SanitizedCloud& cloud, const Execution& exec, PreprocessReport& report) {
     const std::vector<std::uint32_t> representative =
-        near_duplicate_representatives(cloud.positions, constants::kNearDuplicateDistance);
+        near_duplicate_representatives(cloud.positions, constants::kNearDuplicateDistance, exec);
+    std::size_t merged = 0;
+    for (std::size_t i = 0; i < representative.size(); ++i) merged += representative[i] != i;
+    if (merged == 0) return; // the usual case: no copy of the cloud
     SanitizedCloud kept;
     kept.normalisation = cloud.normalisation;
-    std::size_t merged = 0;
     for (std::size_t i = 0; i < representative.size(); ++i) {
         const InputIndex input = cloud.input_index[PointIndex(std::uint32_t(i))];
         if (representative[i] != i) {
             report.fate[input.value()] = PointFate::Duplicate;
             report.duplicate_of[input.value()] =
                 cloud.input_index[PointIndex(representative[i])].value();
-            ++merged;
             continue;
         }
         kept.input_index.push_back(input);
         kept.positions.push_back(cloud.positions[i]);
         if (!cloud.normals.empty()) kept.normals.push_back(cloud.normals[i]);
     }
-    if (merged == 0) return;
     // Exact duplicates of a merged point follow it to its representative.
     for (std::uint32_t& d : report.duplicate_of) d = report.duplicate_of[d];
     char tolerance[32];
@@ -112,7 +121,7 @@ void merge_near_duplicates(SanitizedCloud& cloud, PreprocessReport& report) {
 } // namespace
 
 SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
-                        PreprocessReport& report) {
+                        PreprocessReport& report, const Execution& exec) {
     const std::size_t n = input.size();
     report.input_points = n;
     report.fate.assign(n, PointFate::Kept);
@@ -144,7 +153,7 @@ SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
     }
     report.normal_origin = use_normals ? NormalOrigin::Input : NormalOrigin::Estimated;
 
-    merge_duplicates(input, report);
+    merge_duplicates(input, {exec.threads, nullptr}, report);
     const std::size_t duplicates = report.count(PointFate::Duplicate);
     if (duplicates > 0)
         report.warnings.push_back(
@@ -167,9 +176,13 @@ SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
         cloud.normals.push_back(normal / length);
     }
     cloud.normalisation = bounding_box_normalisation(cloud.positions, report.bbox_diagonal);
-    for (Vec3& q : cloud.positions)
-        q = (q - cloud.normalisation.centre) * cloud.normalisation.scale;
-    merge_near_duplicates(cloud, report);
+    const Normalisation& t = cloud.normalisation;
+    parallel_for_blocks({exec.threads, nullptr}, cloud.positions.size(), kCheapBlock,
+                        [&](std::size_t, std::size_t first, std::size_t end) {
+                            for (std::size_t i = first; i < end; ++i)
+                                cloud.positions[i] = (cloud.positions[i] - t.centre) * t.scale;
+                        });
+    merge_near_duplicates(cloud, {exec.threads, nullptr}, report);
     return cloud;
 }
 

@@ -3,6 +3,7 @@
 
 #include "index_types.h"
 #include "options.h"
+#include "parallel.h"
 #include "point_set.h"
 #include "preprocess/report.h"
 
@@ -29,8 +30,9 @@ struct SanitizedCloud {
 /// Drops non-finite points, checks the normals (falling back to estimation, with a warning in
 /// the report, when any is unusable), merges exact duplicates into their first occurrence, and
 /// normalises coordinates. Fills the report's per-point fates. Throws InvalidInput when no
-/// finite point is left or the coordinates span more than the double range.
+/// finite point is left or the coordinates span more than the double range. `exec`: threads
+/// of the sort of the points (the same result for any count).
 SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
-                        PreprocessReport& report);
+                        PreprocessReport& report, const Execution& exec = Execution{1, nullptr});
 
 } // namespace hrsr
