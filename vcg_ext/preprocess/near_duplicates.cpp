@@ -1,5 +1,6 @@
 #include "preprocess/near_duplicates.h"
 
+#include "preprocess/cell_hash.h"
 #include "preprocess/near_screen.h"
 
 #include <array>
@@ -10,17 +11,8 @@ namespace hrsr {
 
 namespace {
 
-using Cell = std::array<std::int64_t, 3>;
+using Cell = GridCell;
 constexpr std::uint32_t kNone = ~0u;
-
-std::uint64_t hash_of(const Cell& c) {
-    std::uint64_t h = 1469598103934665603ull;
-    for (std::int64_t v : c) h = (h ^ std::uint64_t(v)) * 1099511628211ull;
-    // splitmix64's finaliser: the table takes the low bits, which FNV leaves weak.
-    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-    return h ^ (h >> 31);
-}
 
 // The representatives' cells, each with the head of its chain of representatives: open
 // addressing with linear probing over a power-of-two table at most half full. A slot stores the

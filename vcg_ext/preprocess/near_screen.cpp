@@ -1,5 +1,7 @@
 #include "preprocess/near_screen.h"
 
+#include "preprocess/cell_hash.h"
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -10,16 +12,7 @@ namespace hrsr {
 
 namespace {
 
-using Cell = std::array<std::int64_t, 3>;
-
-std::uint64_t hash_of(const Cell& c) {
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for (std::int64_t v : c) {
-        h = (h ^ std::uint64_t(v)) * 0xbf58476d1ce4e5b9ull;
-        h ^= h >> 31;
-    }
-    return h;
-}
+using Cell = GridCell;
 
 // Cells far wider than the tolerance, marked in two bit sets indexed by a hash of the cell: seen
 // once, seen twice (a collision only adds points to the screen, never drops one). A point looks

@@ -123,6 +123,7 @@ void merge_near_duplicates(SanitizedCloud& cloud, const Execution& exec, Preproc
 SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
                         PreprocessReport& report, const Execution& exec) {
     const std::size_t n = input.size();
+    const Execution quiet{exec.threads, nullptr}; // the phase reports no fraction of its own
     report.input_points = n;
     report.fate.assign(n, PointFate::Kept);
     report.duplicate_of.resize(n);
@@ -153,7 +154,7 @@ SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
     }
     report.normal_origin = use_normals ? NormalOrigin::Input : NormalOrigin::Estimated;
 
-    merge_duplicates(input, {exec.threads, nullptr}, report);
+    merge_duplicates(input, quiet, report);
     const std::size_t duplicates = report.count(PointFate::Duplicate);
     if (duplicates > 0)
         report.warnings.push_back(
@@ -177,12 +178,12 @@ SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
     }
     cloud.normalisation = bounding_box_normalisation(cloud.positions, report.bbox_diagonal);
     const Normalisation& t = cloud.normalisation;
-    parallel_for_blocks({exec.threads, nullptr}, cloud.positions.size(), kCheapBlock,
+    parallel_for_blocks(quiet, cloud.positions.size(), kCheapBlock,
                         [&](std::size_t, std::size_t first, std::size_t end) {
                             for (std::size_t i = first; i < end; ++i)
                                 cloud.positions[i] = (cloud.positions[i] - t.centre) * t.scale;
                         });
-    merge_near_duplicates(cloud, {exec.threads, nullptr}, report);
+    merge_near_duplicates(cloud, quiet, report);
     return cloud;
 }
 

@@ -30,8 +30,9 @@ struct SanitizedCloud {
 /// Drops non-finite points, checks the normals (falling back to estimation, with a warning in
 /// the report, when any is unusable), merges exact duplicates into their first occurrence, and
 /// normalises coordinates. Fills the report's per-point fates. Throws InvalidInput when no
-/// finite point is left or the coordinates span more than the double range. `exec`: threads
-/// of the sort of the points (the same result for any count).
+/// finite point is left or the coordinates span more than the double range. `exec`: threads of
+/// the duplicate sort, the normalisation and the near-duplicate screen (the same result for any
+/// count; its progress is not used).
 SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
                         PreprocessReport& report, const Execution& exec = Execution{1, nullptr});
 
