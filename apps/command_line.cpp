@@ -34,7 +34,8 @@ void add_preprocess_options(CLI::App& c, PreprocessOptions& o) {
                  "PCA neighbours for normal estimation; 0 = automatic, clamp(N/2000, 16, 192)")
         ->capture_default_str();
     c.add_option("--k-smoothing", o.k_smoothing,
-                 "Neighbours of the tangent-mode smoothing; 0 = automatic, clamp(N/2000, 16, 192)")
+                 "Neighbours of the tangent-mode smoothing; 0 = automatic, clamp(N/2000, 16, 192), "
+                 "on HRsR's coarse cloud the same share of the surface")
         ->capture_default_str();
     c.add_option("--min-component-size", o.min_component_size,
                  "Drop connected pieces with fewer points than this (or than the whole cloud)")

@@ -35,7 +35,9 @@ struct PreprocessOptions {
     int k_normals = 0;
     /// Smoothing neighbours (not counting the point); 0 = automatic, clamp(N / 2000, 16, 192)
     /// (D-20: GEL always uses 192, which on clouds of a few thousand points spans a large part
-    /// of the object and folds curved regions).
+    /// of the object and folds curved regions). HRsR's coarse cloud of n points, automatically,
+    /// spans the share of the surface the input's neighbourhood would: min(N / 2000, 192) · n / N
+    /// points, same clamps (D-44).
     int k_smoothing = 0;
     /// Components smaller than min(N, min_component_size) points are dropped (§4.6).
     int min_component_size = 100;

@@ -105,6 +105,26 @@ TEST(PcaNormals, AutomaticNeighbourhoodFollowsD5D20AndD29) {
     EXPECT_EQ(neighbour_count(100000, 8), 8);
 }
 
+TEST(PcaNormals, CoarseCloudSmoothsOverTheInputsShareOfTheSurfaceD44) {
+    // Below 384,000 input points the input's neighbourhood is N / 2000 points, so a coarse cloud
+    // of n points spans the same share with n / 2000: D-20 as on any cloud.
+    EXPECT_EQ(coarse_neighbour_count(362272, 45284, 0), neighbour_count(45284, 0));
+    EXPECT_EQ(coarse_neighbour_count(384000, 48000, 0), 24);
+    // Above, the input's 192 neighbours are 192 / N of its surface: the 800k and 3.2M dragon
+    // samples' coarse clouds at p = 1/8 both smooth over 24 points (n / 2000 gave 50 and 192).
+    EXPECT_EQ(coarse_neighbour_count(800000, 100000, 0), 24);
+    EXPECT_EQ(coarse_neighbour_count(3200000, 400000, 0), 24);
+    EXPECT_EQ(coarse_neighbour_count(3200000, 1600000, 0), 96);
+    EXPECT_EQ(coarse_neighbour_count(20000000, 2500000, 0), 24);
+    // The same clamps: never below 16, D-29 on a tiny coarse cloud, never more than the others.
+    EXPECT_EQ(coarse_neighbour_count(10000000, 100000, 0), 16);
+    EXPECT_EQ(coarse_neighbour_count(10000000, 500, 0), 12);
+    EXPECT_EQ(coarse_neighbour_count(400000, 9, 0), 8);
+    // An explicit count is the user's.
+    EXPECT_EQ(coarse_neighbour_count(3200000, 400000, 100), 100);
+    EXPECT_EQ(coarse_neighbour_count(3200000, 50, 100), 49);
+}
+
 TEST(PcaNormals, CollinearNeighbourhoodsCopyTheNearestValidNormal) {
     // A plane patch plus a straight line of points leaving it: the line's PCA is undefined.
     PointSet s = testing::sample_plane(20);

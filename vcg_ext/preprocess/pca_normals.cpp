@@ -9,17 +9,43 @@
 
 namespace hrsr {
 
-int neighbour_count(std::size_t n, int requested) {
+namespace {
+
+// The automatic count for a cloud of n points whose neighbourhood should span `spanned` points'
+// share of the surface: clamp(spanned, 16, 192), at most n / 40 on a small cloud (D-29).
+int automatic_count(std::size_t n, std::size_t spanned) {
     using namespace constants;
     // D-29: on a tiny cloud 16 neighbours span a large share of the surface (the 315-point
     // "eight": a tube 12 spacings around), so the automatic count is also at most n / 40.
     const std::size_t small_cloud_cap =
         std::max<std::size_t>(kMinSmallCloudNeighbours, n / kSmallCloudPointsPerNeighbour);
-    const std::size_t automatic =
-        std::min(std::clamp<std::size_t>(n / kPointsPerNeighbour, kMinNeighbours, kMaxNeighbours),
-                 small_cloud_cap);
-    const std::size_t wanted = requested > 0 ? std::size_t(requested) : automatic;
+    return int(std::min(std::clamp<std::size_t>(spanned, kMinNeighbours, kMaxNeighbours),
+                        small_cloud_cap));
+}
+
+int at_most_all_others(std::size_t n, std::size_t wanted) {
     return int(std::min(wanted, n > 0 ? n - 1 : 0));
+}
+
+} // namespace
+
+int neighbour_count(std::size_t n, int requested) {
+    const std::size_t wanted = requested > 0
+                                   ? std::size_t(requested)
+                                   : automatic_count(n, n / constants::kPointsPerNeighbour);
+    return at_most_all_others(n, wanted);
+}
+
+int coarse_neighbour_count(std::size_t input_points, std::size_t coarse_points, int requested) {
+    using namespace constants;
+    if (requested > 0) return at_most_all_others(coarse_points, std::size_t(requested));
+    // D-44: the input's neighbourhood spans min(N / 2000, 192) of its N points; the coarse cloud's
+    // spans the same share of the surface. Below N = 384,000 that is n / 2000, as on any cloud.
+    const std::size_t clamp_from = std::size_t(kMaxNeighbours) * kPointsPerNeighbour;
+    const std::size_t spanned = input_points <= clamp_from
+                                    ? coarse_points / kPointsPerNeighbour
+                                    : kMaxNeighbours * coarse_points / input_points;
+    return at_most_all_others(coarse_points, automatic_count(coarse_points, spanned));
 }
 
 namespace {

@@ -17,6 +17,12 @@ struct PcaNormals {
 /// (D-5 for PCA, D-20 for smoothing); never more than n − 1.
 int neighbour_count(std::size_t n, int requested);
 
+/// The smoothing neighbourhood of HRsR's coarse cloud of `coarse_points` that stands for
+/// `input_points`: `requested` if > 0, else the count whose neighbourhood spans the share of the
+/// surface the input's automatic neighbourhood would (D-44): neighbour_count(coarse_points, 0)
+/// below 384,000 input points, 192 · coarse_points / input_points above; same clamps.
+int coarse_neighbour_count(std::size_t input_points, std::size_t coarse_points, int requested);
+
 /// For each point: the smallest-eigenvalue eigenvector of the covariance of the point and its
 /// `neighbours` nearest neighbours. A point whose covariance is degenerate takes the normal of
 /// the nearest point that has a defined one (D-5). When no point has one, `normals` is empty.
