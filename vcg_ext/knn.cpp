@@ -107,6 +107,42 @@ void KnnIndex::neighbours_of(std::uint32_t i, int k, std::vector<Neighbour>& out
     if (out.size() > std::size_t(wanted)) out.resize(std::size_t(wanted));
 }
 
+bool KnnIndex::at_least(const Vec3& p, double radius, std::size_t count,
+                        const std::function<bool(double)>& accept) const {
+    if (count == 0) return true;
+    if (!tree_) return false;
+    const auto& nodes = tree_->kd._getNodes();
+    const auto& points = tree_->kd._getPoints();
+    const double squared_radius = radius * radius;
+    // Depth first, the side of each split holding p first; a cell is entered only when its
+    // split plane is within `radius` (as vcg's own queries prune, but in double).
+    struct Cell {
+        unsigned node;
+        double squared_plane_distance;
+    };
+    thread_local std::vector<Cell> stack;
+    stack.assign(1, {0U, 0.0});
+    std::size_t found = 0;
+    while (!stack.empty()) {
+        const Cell cell = stack.back();
+        stack.pop_back();
+        if (cell.squared_plane_distance > squared_radius) continue;
+        const auto& node = nodes[cell.node];
+        if (node.leaf) {
+            for (unsigned i = node.start, end = node.start + node.size; i < end; ++i) {
+                const double squared = vcg::SquaredNorm(p - points[i]);
+                if (squared <= squared_radius && accept(squared) && ++found == count) return true;
+            }
+            continue;
+        }
+        const double offset = p[int(node.dim)] - node.splitValue;
+        const unsigned below = node.firstChildId, above = node.firstChildId + 1;
+        stack.push_back({offset < 0 ? above : below, offset * offset});
+        stack.push_back({offset < 0 ? below : above, cell.squared_plane_distance});
+    }
+    return false;
+}
+
 void KnnIndex::within(const Vec3& p, double radius, std::vector<std::uint32_t>& out) const {
     out.clear();
     if (!tree_) return;

@@ -6,6 +6,7 @@
 #include "point_set.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -37,6 +38,13 @@ public:
     /// Cheaper than neighbours_of: the neighbours are not sorted. Thread-safe.
     void squared_distances_at_ranks(std::uint32_t i, const std::vector<int>& ranks,
                                     std::vector<double>& out) const;
+    /// Whether at least `count` data points q satisfy `accept(squared distance from p to q)`,
+    /// the distance computed as the k-nearest queries compute theirs, so that a caller decides
+    /// exactly as it would from their results. `accept` must hold only within `radius` of p
+    /// (the search looks no further). Stops at the count-th: a few leaves visited however many
+    /// points lie within `radius`. Thread-safe.
+    bool at_least(const Vec3& p, double radius, std::size_t count,
+                  const std::function<bool(double)>& accept) const;
     /// Every data point within `radius` of p, in no particular order. `out` is overwritten.
     void within(const Vec3& p, double radius, std::vector<std::uint32_t>& out) const;
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <random>
 #include <set>
@@ -102,6 +103,45 @@ TEST(Knn, DistancesAtRanksEqualTheSortedNeighbours) {
         }
     }
     EXPECT_EQ(found.size(), points.size() - 1);
+}
+
+TEST(Knn, AtLeastDecidesAsTheSortedNeighboursDo) {
+    // The test D-30 makes: at least count points (the point's own included) with
+    // length > 2 · √d. A grid (ties at every distance), exact duplicates, a random sphere, counts
+    // beyond the cloud, lengths on the ties.
+    std::vector<Vec3> points;
+    for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 8; ++j) points.emplace_back(i, j, 0);
+    for (int d = 0; d < 3; ++d) points.emplace_back(3, 3, 0);
+    const PointSet sphere = testing::sample_sphere(500);
+    for (const Vec3& p : sphere.positions) points.push_back(p * 3.0 + Vec3(20, 0, 0));
+    const KnnIndex index(points);
+    std::vector<Neighbour> found;
+    int decided_true = 0, decided_false = 0;
+    for (std::uint32_t q = 0; q < points.size(); q += 3) {
+        index.neighbours_of(q, int(points.size()), found);
+        for (const double length : {0.5, 2.0, 2.0 * std::sqrt(2.0), 4.0, 5.3, 12.0}) {
+            for (const std::size_t count : {std::size_t(1), std::size_t(5), std::size_t(30),
+                                            points.size(), points.size() + 1}) {
+                const auto nearer = [length](double squared) {
+                    return length > 2.0 * std::sqrt(squared);
+                };
+                // The point itself at 0, then its neighbours in order.
+                std::size_t expected = nearer(0.0) ? 1 : 0;
+                for (const Neighbour& n : found) expected += nearer(n.squared_distance) ? 1 : 0;
+                const bool answer =
+                    index.at_least(points[q], length / 2 * (1 + 1e-9), count, nearer);
+                EXPECT_EQ(answer, expected >= count)
+                    << "point " << q << " length " << length << " count " << count;
+                (answer ? decided_true : decided_false)++;
+            }
+        }
+    }
+    EXPECT_GT(decided_true, 100);
+    EXPECT_GT(decided_false, 100);
+    const std::vector<Vec3> none;
+    EXPECT_FALSE(KnnIndex(none).at_least(Vec3(0, 0, 0), 1, 1, [](double) { return true; }));
+    EXPECT_TRUE(KnnIndex(none).at_least(Vec3(0, 0, 0), 1, 0, [](double) { return true; }));
 }
 
 TEST(NeighbourGraph, SymmetricUnionIsSymmetricSortedAndLoopFree) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "index_types.h"
+#include "knn.h"
 #include "parallel.h"
 #include "point_set.h"
 
@@ -20,6 +21,11 @@ std::vector<double> input_reach(const std::vector<Vec3>& points, const std::vect
 /// The same at several ranks, from one kd-tree and one query per point: result[r][i] is the
 /// reach of point at[i] at ranks[r].
 std::vector<std::vector<double>> input_reach(const std::vector<Vec3>& points,
+                                             const std::vector<PointIndex>& at,
+                                             const std::vector<int>& ranks, const Execution& exec);
+
+/// The same from an index built over `points` (KnnIndex(points)).
+std::vector<std::vector<double>> input_reach(const KnnIndex& index,
                                              const std::vector<PointIndex>& at,
                                              const std::vector<int>& ranks, const Execution& exec);
 

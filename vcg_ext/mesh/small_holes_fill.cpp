@@ -36,23 +36,24 @@ class DirectedEdges {
 public:
     DirectedEdges(const std::vector<Triangle>& triangles, std::size_t vertices)
         : triangles_(triangles), corners_(corners_by_vertex(vertices, triangles)) {}
-    /// Some triangle has the directed edge a → b.
-    bool has(std::uint32_t a, std::uint32_t b) const {
-        for (std::uint32_t i = corners_.begin(a); i < corners_.end(a); ++i) {
-            const std::uint32_t c = corners_.corner[i];
-            if (triangles_[c / 3][(c % 3 + 1) % 3] == b) return true;
-        }
-        return false;
-    }
     /// The vertex before b along the hole b borders (see hole_successors), kNone or kMany: the
     /// edges a → b into b are at b's corners, and a → b borders a hole when no b → a exists.
     std::uint32_t hole_successor(std::uint32_t b) const {
-        std::uint32_t next = kNone;
+        // The edges out of b and into b, read once from b's corners (not b's triangles again
+        // for every edge into b).
+        thread_local std::vector<std::uint32_t> after, before;
+        after.clear();
+        before.clear();
         for (std::uint32_t i = corners_.begin(b); i < corners_.end(b); ++i) {
             const std::uint32_t c = corners_.corner[i];
-            const std::uint32_t a = triangles_[c / 3][(c % 3 + 2) % 3];
-            if (!has(b, a)) next = next == kNone ? a : kMany;
+            const Triangle& t = triangles_[c / 3];
+            after.push_back(t[(c % 3 + 1) % 3]);
+            before.push_back(t[(c % 3 + 2) % 3]);
         }
+        std::uint32_t next = kNone;
+        for (std::uint32_t a : before)
+            if (std::find(after.begin(), after.end(), a) == after.end())
+                next = next == kNone ? a : kMany;
         return next;
     }
     /// Some triangle has the edge {a, b}.
@@ -228,10 +229,15 @@ public:
 private:
     template <class Visit>
     void for_cells(const Box& b, Visit&& visit) const {
-        auto key = [&](const Vec3& p, int k) { return std::int64_t(std::floor(p[k] / cell_)); };
-        for (std::int64_t x = key(b.lo, 0); x <= key(b.hi, 0); ++x)
-            for (std::int64_t y = key(b.lo, 1); y <= key(b.hi, 1); ++y)
-                for (std::int64_t z = key(b.lo, 2); z <= key(b.hi, 2); ++z)
+        // The box's cell range, worked out once (D-28 asks it of every triangle of the mesh).
+        std::int64_t lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::int64_t(std::floor(b.lo[k] / cell_));
+            hi[k] = std::int64_t(std::floor(b.hi[k] / cell_));
+        }
+        for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
+            for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
+                for (std::int64_t z = lo[2]; z <= hi[2]; ++z)
                     visit(std::uint64_t((x * 73856093) ^ (y * 19349663) ^ (z * 83492791)));
     }
     const VertexPositions& positions_;
