@@ -55,6 +55,9 @@ private:
     std::size_t size_ = 0;
 };
 
+/// An entry of a KnnTable whose point is no longer in the cloud (dropped after the query).
+inline constexpr std::uint32_t kNoNeighbour = 0xffffffffU;
+
 /// The k nearest neighbours of every point, fixed stride: row i is
 /// index[i * k .. i * k + k), with k = min(requested, N − 1), sorted by (distance, index).
 struct KnnTable {

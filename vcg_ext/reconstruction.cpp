@@ -326,7 +326,13 @@ PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collaps
         coarse_neighbour_count(cloud.size(), coarse.size(), options.k_smoothing);
     coarse.smoothed = smoothed_positions(coarse.positions, coarse.normals, coarse_options, exec,
                                          report.preprocess);
-    const CsrGraph graph = neighbour_graph(coarse.smoothed, options.k, exec);
+    // The kNN rows stay with the coarse cloud: RsR's candidate graph on it asks the same
+    // queries of every piece (nearly all its rows lie in one piece).
+    {
+        const KnnIndex index(coarse.smoothed);
+        coarse.neighbours = knn_table(index, options.k, exec);
+    }
+    const CsrGraph graph = symmetric_union(coarse.neighbours, coarse.size(), exec);
     // D-35: the coarse cloud's pieces are the input's. At a coarse spacing wider than the gap
     // between two surfaces their kNN graph joins them (three interlocked rings 0.023 apart, at
     // p = 1/8 a coarse spacing of 0.06, came out as one piece of genus 2): an edge longer

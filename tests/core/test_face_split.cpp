@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -63,7 +64,7 @@ void expect_same(const Split& a, const Split& b) {
 TEST(FaceSplit, LookingAheadInParallelTakesTheCandidatesAsOneByOne) {
     PointSet s = testing::sample_double_torus(12000, testing::Density::Graded);
     testing::add_noise(s, 0.004 * testing::bounding_box_diagonal(s));
-    const rsr::ComponentCloud cloud{s.positions, s.positions, s.normals, s.size(), {}};
+    const rsr::ComponentCloud cloud{s.positions, s.positions, s.normals, s.size(), {}, {}};
     const KnnIndex index(cloud.smoothed);
     const Split one_by_one = split(cloud, index, 1, 1);
     ASSERT_GT(one_by_one.stats.inserted, 10000u);
@@ -82,7 +83,7 @@ TEST(FaceSplit, LookingAheadInParallelTakesTheCandidatesAsOneByOne) {
 // thread count.
 TEST(FaceSplit, CandidatesAreInOneOrderForAnyThreadCount) {
     const PointSet s = testing::sample_torus(20000);
-    const rsr::ComponentCloud cloud{s.positions, s.positions, s.normals, s.size(), {}};
+    const rsr::ComponentCloud cloud{s.positions, s.positions, s.normals, s.size(), {}, {}};
     const KnnIndex index(cloud.smoothed);
     const PreprocessOptions pre;
     const rsr::CandidateGraph graph = rsr::build_candidate_graph(cloud, index, pre, {});
@@ -103,6 +104,64 @@ TEST(FaceSplit, CandidatesAreInOneOrderForAnyThreadCount) {
             ASSERT_TRUE(many[c].length == one[c].length && many[c].i == one[c].i &&
                         many[c].j == one[c].j)
                 << threads << " threads, at " << c;
+    }
+}
+
+// HRsR's hand-off passes its kNN rows of the whole coarse cloud; a component takes the rows that
+// lie in it and queries the others. The graph must be the one its own queries give: here a torus
+// with a sphere touching it (rows across the two) and entries of points dropped afterwards.
+TEST(CandidateGraph, KnownRowsGiveTheGraphTheComponentsQueriesGive) {
+    const PointSet torus = testing::sample_torus(6000);
+    const PointSet sphere = testing::sample_sphere(3000, 0.3, Vec3(1.6, 0, 0));
+    std::vector<Vec3> positions = torus.positions, normals = torus.normals;
+    std::vector<std::uint32_t> component(torus.size(), 0);
+    positions.insert(positions.end(), sphere.positions.begin(), sphere.positions.end());
+    normals.insert(normals.end(), sphere.normals.begin(), sphere.normals.end());
+    component.resize(positions.size(), 1);
+    const PreprocessOptions pre;
+    KnnTable table;
+    {
+        const KnnIndex whole(positions);
+        table = knn_table(whole, pre.k, {});
+    }
+    for (std::size_t e = 0; e < table.index.size(); e += 997) table.index[e] = kNoNeighbour;
+    std::vector<std::uint32_t> local_index(positions.size());
+    for (std::uint32_t i = 0; i < positions.size(); ++i)
+        local_index[i] = component[i] == 0 ? i : i - std::uint32_t(torus.size());
+
+    for (std::uint32_t c : {0U, 1U}) {
+        rsr::ComponentCloud cloud;
+        std::vector<std::uint32_t> cloud_index;
+        for (std::uint32_t i = 0; i < positions.size(); ++i) {
+            if (component[i] != c) continue;
+            cloud_index.push_back(i);
+            cloud.positions.push_back(positions[i]);
+            cloud.smoothed.push_back(positions[i]);
+            cloud.normals.push_back(normals[i]);
+        }
+        cloud.represented_points = cloud.smoothed.size();
+        std::size_t inside = 0;
+        for (std::uint32_t i : cloud_index) {
+            const std::uint32_t* row = table.row(i);
+            inside += std::all_of(row, row + table.k, [&](std::uint32_t e) {
+                return e != kNoNeighbour && component[e] == c;
+            });
+        }
+        EXPECT_GT(inside, cloud_index.size() / 2) << "component " << c;
+        EXPECT_LT(inside, cloud_index.size()) << "component " << c;
+
+        const KnnIndex index(cloud.smoothed);
+        const rsr::CandidateGraph queried = rsr::build_candidate_graph(cloud, index, pre, {});
+        cloud.known_neighbours = {&table, cloud_index.data(), component.data(), local_index.data(),
+                                  c};
+        for (int threads : {1, 2}) {
+            const rsr::CandidateGraph known =
+                rsr::build_candidate_graph(cloud, index, pre, {threads, nullptr});
+            EXPECT_EQ(known.graph.offsets, queried.graph.offsets) << "component " << c;
+            EXPECT_EQ(known.graph.adjacency, queried.graph.adjacency) << "component " << c;
+            EXPECT_EQ(known.pre_max_length, queried.pre_max_length) << "component " << c;
+            EXPECT_EQ(known.max_length, queried.max_length) << "component " << c;
+        }
     }
 }
 

@@ -319,7 +319,7 @@ TEST(RsrComponent, SphereIsAClosedGenusZeroManifold) {
     ASSERT_EQ(report.components_kept, 1u);
     rsr::ComponentStats stats;
     const auto local = rsr::reconstruct_component(
-        {c.positions, c.smoothed, c.normals, c.size(), {}}, o, {}, stats, &checker);
+        {c.positions, c.smoothed, c.normals, c.size(), {}, {}}, o, {}, stats, &checker);
     const std::vector<Triangle> triangles(local.begin(), local.end());
     const MeshStats m = measure_mesh(c.size(), triangles);
     EXPECT_EQ(m.non_manifold_edges, 0u);

@@ -263,6 +263,19 @@ PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& 
         if (!cloud.handle_reach.empty()) kept.handle_reach.push_back(cloud.handle_reach[i]);
         kept.component.push_back(split.label[i]);
     }
+    if (cloud.neighbours.size() == cloud.size() && cloud.size() > 0) {
+        std::vector<std::uint32_t> renumbered(cloud.size(), kNoNeighbour);
+        for (std::uint32_t i = 0, next = 0; i < cloud.size(); ++i)
+            if (split.label[i] != ComponentSplit::kDropped) renumbered[i] = next++;
+        kept.neighbours.k = cloud.neighbours.k;
+        kept.neighbours.index.reserve(kept.size() * std::size_t(cloud.neighbours.k));
+        for (std::size_t i = 0; i < cloud.size(); ++i) {
+            if (split.label[i] == ComponentSplit::kDropped) continue;
+            const std::uint32_t* row = cloud.neighbours.row(i);
+            for (int j = 0; j < cloud.neighbours.k; ++j)
+                kept.neighbours.index.push_back(renumbered[row[j]]);
+        }
+    }
     return kept;
 }
 

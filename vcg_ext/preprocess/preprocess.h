@@ -37,6 +37,11 @@ struct PreparedCloud {
     /// HRsR's coarse cloud: the longest handle edge at each point, the candidate reach of RsR on
     /// the input points there (D-31); empty = only the candidate graph limits handles.
     std::vector<double> handle_reach;
+    /// HRsR's coarse cloud: each point's nearest others on `smoothed`, as knn_table() gives them
+    /// for the options' k, in this cloud's indices (kNoNeighbour: dropped with a small
+    /// component). RsR's candidate graph takes the rows that lie in one component instead of
+    /// querying them again; empty = RsR queries every row.
+    KnnTable neighbours;
     Normalisation normalisation;
     /// Set by preprocess(): component of each point (0 … component_count − 1, §4.6).
     std::vector<std::uint32_t> component;

@@ -18,6 +18,29 @@ int candidate_rank(int k, std::size_t points) {
                       std::max(k, 1));
 }
 
+namespace {
+
+// Local point i's k nearest in the component from the cloud's known row, when that row
+// has exactly k entries, all in this component: the component's own query would give the same
+// points (a subset holding a point's k nearest in the whole cloud holds its k nearest), in the
+// same order (the local indices keep the cloud's order) and at the same distances (computed as
+// the query computes them). False = ask the index.
+bool known_row(const ComponentCloud& cloud, std::uint32_t i, int k, std::vector<Neighbour>& out) {
+    const ComponentCloud::KnownNeighbours& known = cloud.known_neighbours;
+    if (known.table == nullptr || known.table->k != k) return false;
+    const std::uint32_t* row = known.table->row(known.cloud_index[i]);
+    for (int j = 0; j < k; ++j)
+        if (row[j] == kNoNeighbour || known.component_of[row[j]] != known.component) return false;
+    out.resize(std::size_t(k));
+    for (int j = 0; j < k; ++j) {
+        const std::uint32_t local = known.local_index[row[j]];
+        out[std::size_t(j)] = {local, (cloud.smoothed[i] - cloud.smoothed[local]).SquaredNorm()};
+    }
+    return true;
+}
+
+} // namespace
+
 CandidateGraph build_candidate_graph(const ComponentCloud& cloud, const KnnIndex& index,
                                      const PreprocessOptions& options, const Execution& exec) {
     const std::size_t n = cloud.smoothed.size();
@@ -30,7 +53,8 @@ CandidateGraph build_candidate_graph(const ComponentCloud& cloud, const KnnIndex
     std::vector<std::vector<std::uint32_t>> kept(n);
     parallel_for(exec, n, [&](std::size_t i) {
         thread_local std::vector<Neighbour> found;
-        index.neighbours_of(std::uint32_t(i), k, found);
+        if (!known_row(cloud, std::uint32_t(i), k, found))
+            index.neighbours_of(std::uint32_t(i), k, found);
         if (!found.empty())
             g.pre_max_length[i] = std::sqrt(
                 found[std::size_t(std::min<int>(rank, int(found.size()))) - 1].squared_distance);

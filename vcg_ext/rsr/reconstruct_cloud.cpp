@@ -23,9 +23,22 @@ std::vector<ComponentResult> split_by_component(const PreparedCloud& cloud) {
     return parts;
 }
 
+// Each point's index within its component (for the known kNN rows).
+std::vector<std::uint32_t> local_indices(const PreparedCloud& cloud,
+                                         const std::vector<ComponentResult>& parts) {
+    std::vector<std::uint32_t> local(cloud.size(), 0);
+    for (const ComponentResult& part : parts)
+        for (std::uint32_t i = 0; i < part.points.size(); ++i) local[part.points[i]] = i;
+    return local;
+}
+
 void reconstruct_part(const PreparedCloud& cloud, ComponentResult& part, const RsrOptions& options,
-                      const Execution& exec, Observer* observer) {
+                      const std::vector<std::uint32_t>& local_index, const Execution& exec,
+                      Observer* observer) {
     ComponentCloud local;
+    if (cloud.neighbours.size() == cloud.size() && !part.points.empty())
+        local.known_neighbours = {&cloud.neighbours, part.points.data(), cloud.component.data(),
+                                  local_index.data(), cloud.component[part.points.front()]};
     for (std::uint32_t i : part.points) {
         local.positions.push_back(cloud.positions[i]);
         local.smoothed.push_back(cloud.smoothed[i]);
@@ -38,17 +51,20 @@ void reconstruct_part(const PreparedCloud& cloud, ComponentResult& part, const R
 
 void reconstruct_parts(const PreparedCloud& cloud, std::vector<ComponentResult>& parts,
                        const RsrOptions& options, const Execution& exec, Observer* observer) {
+    const std::vector<std::uint32_t> local_index = cloud.neighbours.size() == cloud.size()
+                                                       ? local_indices(cloud, parts)
+                                                       : std::vector<std::uint32_t>();
     std::vector<std::size_t> small;
     for (std::size_t c = 0; c < parts.size(); ++c) {
         if (observer || parts[c].points.size() >= kLargeComponent)
-            reconstruct_part(cloud, parts[c], options, exec, observer);
+            reconstruct_part(cloud, parts[c], options, local_index, exec, observer);
         else
             small.push_back(c);
     }
     if (exec.progress && !small.empty()) exec.progress->begin("small components");
     const Execution inner{1, nullptr};
     parallel_for(exec, small.size(), [&](std::size_t s) {
-        reconstruct_part(cloud, parts[small[s]], options, inner, nullptr);
+        reconstruct_part(cloud, parts[small[s]], options, local_index, inner, nullptr);
     });
 }
 
