@@ -117,15 +117,18 @@ void measure_output(const PointSet& input, const Normalisation& normalisation, b
 
 // The coordinates as the writers store them: the input's, at its precision. D-26 and D-32 test
 // intersections there (exactly), so that what they leave is what a user's check finds.
-std::vector<Vec3> written_positions(const PointSet& input, const Reconstruction& mesh) {
-    std::vector<Vec3> written;
-    written.reserve(mesh.vertex_input_index.size());
-    for (std::uint32_t i : mesh.vertex_input_index) {
-        Vec3 p = input.positions[i];
-        if (input.precision == CoordinatePrecision::Float)
-            for (int k = 0; k < 3; ++k) p[k] = double(float(p[k]));
-        written.push_back(p);
-    }
+std::vector<Vec3> written_positions(const PointSet& input, const Reconstruction& mesh,
+                                    const Execution& exec) {
+    std::vector<Vec3> written(mesh.vertex_input_index.size());
+    parallel_for_blocks(exec, written.size(), kCheapBlock,
+                        [&](std::size_t, std::size_t first, std::size_t end) {
+                            for (std::size_t v = first; v < end; ++v) {
+                                Vec3 p = input.positions[mesh.vertex_input_index[v]];
+                                if (input.precision == CoordinatePrecision::Float)
+                                    for (int k = 0; k < 3; ++k) p[k] = double(float(p[k]));
+                                written[v] = p;
+                            }
+                        });
     return written;
 }
 
@@ -183,7 +186,7 @@ void repair_and_remove_folds(const PointSet& input, const PreparedCloud& cloud, 
     if (rounds <= 0 || mesh.triangles.size() < 2) return;
     if (exec.progress) exec.progress->begin("fold repair");
     const std::size_t given = append_points_in_no_triangle(cloud, report, mesh);
-    const std::vector<Vec3> written = written_positions(input, mesh);
+    const std::vector<Vec3> written = written_positions(input, mesh, exec);
     std::optional<Timer> timer(std::in_place, report.timings, "fold search");
     FoldSearch search(written, mesh.triangles, exec);
     timer.emplace(report.timings, "fold repair");
@@ -194,10 +197,11 @@ void repair_and_remove_folds(const PointSet& input, const PreparedCloud& cloud, 
 }
 
 // D-36: faces without area in the coordinates as written go (a flip or, on the border, the face).
-void clear_flat_output_faces(const PointSet& input, Reconstruction& mesh,
+void clear_flat_output_faces(const PointSet& input, Reconstruction& mesh, const Execution& exec,
                              ReconstructionReport& report) {
     Timer timer(report.timings, "flat faces");
-    report.flat_faces = clear_flat_faces(written_positions(input, mesh), mesh.triangles);
+    report.flat_faces =
+        clear_flat_faces(written_positions(input, mesh, exec), mesh.triangles, exec);
 }
 
 // D-33 for RsR embeds a noisy cloud along its input normals' neighbourhood mean; the vertices
@@ -445,7 +449,7 @@ Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const E
     Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
     assembly.reset();
     repair_and_remove_folds(input, cloud, options.fold_repair_rounds, exec, mesh, report);
-    clear_flat_output_faces(input, mesh, report);
+    clear_flat_output_faces(input, mesh, exec, report);
     restore_input_normals(input, report.preprocess, mesh);
     return {std::move(mesh), cloud.normalisation};
 }
@@ -527,7 +531,7 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
     Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles));
     assembly.reset();
     repair_and_remove_folds(input, cloud, options.rsr.fold_repair_rounds, exec, mesh, report);
-    clear_flat_output_faces(input, mesh, report);
+    clear_flat_output_faces(input, mesh, exec, report);
     return {std::move(mesh), cloud.normalisation};
 }
 

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
 #include <set>
 
 namespace hrsr {
@@ -95,6 +97,48 @@ TEST(FlatFaces, AProperMeshIsUnchanged) {
     std::vector<Triangle> t = before;
     EXPECT_EQ(clear_flat_faces(p, t).found, 0u);
     EXPECT_EQ(t, before);
+}
+
+// The search runs by blocks of faces in parallel: a grid of 60,000 faces with flat faces along
+// its bottom row (as in the second test), shuffled into every block, gives the same faces and
+// counts for any thread count.
+TEST(FlatFaces, AnyThreadCountClearsTheSameFaces) {
+    const int columns = 150, rows = 200;
+    std::vector<Vec3> p;
+    for (int r = 0; r <= rows; ++r)
+        for (int c = 0; c <= columns; ++c)
+            p.emplace_back(c, r, r == 0 ? 0 : 0.01 * ((r * 7 + c * 3) % 5));
+    const auto at = [&](int r, int c) { return std::uint32_t(r * (columns + 1) + c); };
+    std::vector<Triangle> before;
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < columns; ++c) {
+            before.push_back({at(r, c), at(r, c + 1), at(r + 1, c + 1)});
+            before.push_back({at(r, c), at(r + 1, c + 1), at(r + 1, c)});
+        }
+    // Flat notches along the bottom row: a point halfway between two of its points, with a
+    // face (m, b, a) on the line and (m, a, below) and (m, below, b) under it.
+    for (int c = 0; c < columns; c += 2) {
+        const std::uint32_t a = at(0, c), b = at(0, c + 1), m = std::uint32_t(p.size()),
+                            below = std::uint32_t(p.size() + 1);
+        p.push_back((p[a] + p[b]) * 0.5);
+        p.emplace_back(c + 0.5, -1, 0);
+        before.push_back({m, b, a});
+        before.push_back({m, a, below});
+        before.push_back({m, below, b});
+    }
+    std::shuffle(before.begin(), before.end(), std::mt19937(7)); // flat faces in every block
+    std::vector<Triangle> one = before;
+    const FlatFaceStats single = clear_flat_faces(p, one, {1, nullptr});
+    EXPECT_GE(single.found, std::size_t(columns / 2));
+    EXPECT_EQ(single.left, 0u);
+    for (int threads : {2, 8}) {
+        std::vector<Triangle> many = before;
+        const FlatFaceStats st = clear_flat_faces(p, many, {threads, nullptr});
+        EXPECT_EQ(many, one) << threads << " threads";
+        EXPECT_EQ(st.found, single.found);
+        EXPECT_EQ(st.flipped, single.flipped);
+        EXPECT_EQ(st.removed, single.removed);
+    }
 }
 
 } // namespace

@@ -77,15 +77,23 @@ private:
 
 } // namespace
 
-FlatFaceStats clear_flat_faces(const std::vector<Vec3>& positions,
-                               std::vector<Triangle>& triangles) {
+FlatFaceStats clear_flat_faces(const std::vector<Vec3>& positions, std::vector<Triangle>& triangles,
+                               const Execution& exec) {
     FlatFaceStats stats;
-    std::vector<std::size_t> flat_at; // by face number: one exact test per face
-    for (std::size_t f = 0; f < triangles.size(); ++f) {
-        const Triangle& t = triangles[f];
-        if (exact::collinear(positions[t[0]], positions[t[1]], positions[t[2]]))
-            flat_at.push_back(f);
-    }
+    // By face number: one exact test per face, by blocks (each listing its own, in order).
+    std::vector<std::vector<std::size_t>> flat_in_block(block_count(triangles.size(), kCheapBlock));
+    parallel_for_blocks(
+        exec, triangles.size(), kCheapBlock,
+        [&](std::size_t block, std::size_t first, std::size_t end) {
+            for (std::size_t f = first; f < end; ++f) {
+                const Triangle& t = triangles[f];
+                if (exact::collinear(positions[t[0]], positions[t[1]], positions[t[2]]))
+                    flat_in_block[block].push_back(f);
+            }
+        });
+    std::vector<std::size_t> flat_at;
+    for (const std::vector<std::size_t>& block : flat_in_block)
+        flat_at.insert(flat_at.end(), block.begin(), block.end());
     stats.found = flat_at.size();
     if (stats.found == 0) return stats;
 

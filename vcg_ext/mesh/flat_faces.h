@@ -4,6 +4,7 @@
 #pragma once
 
 #include "mesh/triangle_mesh.h"
+#include "parallel.h"
 #include "point_set.h"
 #include "reconstruction_stats.h"
 
@@ -19,8 +20,9 @@ namespace hrsr {
 /// (a run of four points on one line) are counted as left. `triangles` must be a consistently
 /// oriented manifold (if not, nothing changes and every flat face is counted as left). Its
 /// vertices are kept; faces are kept in their order, those across a flipped edge rewritten.
-/// Sequential.
-FlatFaceStats clear_flat_faces(const std::vector<Vec3>& positions,
-                               std::vector<Triangle>& triangles);
+/// The search by blocks of faces in parallel, the clearing sequential: the same result for any
+/// thread count.
+FlatFaceStats clear_flat_faces(const std::vector<Vec3>& positions, std::vector<Triangle>& triangles,
+                               const Execution& exec = Execution{1, nullptr});
 
 } // namespace hrsr
