@@ -423,8 +423,10 @@ struct InSpatialOrder {
 // every input point accounted for.
 Reconstruction finished(const PointSet& input, const InSpatialOrder& ordered, bool outward,
                         const Execution& exec, Unmeasured out, ReconstructionReport& report) {
-    restore_input_order(ordered.order, out.mesh, report);
-    measure_output(input, out.normalisation, outward, exec, out.mesh, report);
+    // Measured in spatial order, where the vertices of a triangle lie close in memory; what it
+    // counts and turns does not depend on the vertices' numbers.
+    measure_output(ordered.points, out.normalisation, outward, exec, out.mesh, report);
+    restore_input_order(ordered.order, out.mesh, report, exec);
     account(input, out.mesh, report);
     require_triangles(out.mesh, report);
     return std::move(out.mesh);

@@ -1,4 +1,5 @@
 // D-40: the cloud in Morton order inside reconstruct(), the result in input indices.
+#include "input_order.h"
 #include "reconstruction.h"
 #include "samplers.h"
 #include "spatial_order.h"
@@ -118,6 +119,59 @@ bool in_input_order(const std::vector<std::uint32_t>& vertex_input_index) {
            std::is_sorted(copies, vertex_input_index.end()) &&
            std::all_of(copies, vertex_input_index.end(),
                        [&](std::uint32_t i) { return seen.count(i) == 1; });
+}
+
+// The mesh handed back in input numbers: each point's first vertex by input index, then the
+// copies of non-manifold points by input index (each point's in vertex order), the triangles over
+// the new numbers; the same for any thread count. Checked against sorting every vertex by
+// (copy, input index), on 200,000 vertices over a shuffled order with 3,000 copies.
+TEST(SpatialOrder, VerticesComeBackNumberedInInputOrder) {
+    const std::uint32_t points = 250000;
+    SpatialOrder order;
+    order.input_index.resize(points);
+    std::iota(order.input_index.begin(), order.input_index.end(), 0U);
+    std::mt19937 rng(11);
+    std::shuffle(order.input_index.begin(), order.input_index.end(), rng);
+    Reconstruction spatial;
+    for (std::uint32_t p = 0; p < points; p += 5)
+        for (int k = 0; k < 4; ++k) spatial.vertex_input_index.push_back(p + std::uint32_t(k));
+    std::uniform_int_distribution<std::uint32_t> any_vertex(
+        0, std::uint32_t(spatial.vertex_input_index.size() - 1));
+    for (int c = 0; c < 3000; ++c) // copies: another vertex of a point that has one
+        spatial.vertex_input_index.push_back(spatial.vertex_input_index[any_vertex(rng)]);
+    const std::size_t n = spatial.vertex_input_index.size();
+    for (std::uint32_t v = 0; v < n; ++v) spatial.vertex_normals.emplace_back(v, 0, 1);
+    std::uniform_int_distribution<std::uint32_t> any(0, std::uint32_t(n - 1));
+    for (int t = 0; t < 100000; ++t) spatial.triangles.push_back({any(rng), any(rng), any(rng)});
+
+    // The expected numbering: a stable sort of (is a copy, input index).
+    std::vector<std::pair<bool, std::uint32_t>> key(n);
+    std::vector<std::uint8_t> seen(points, 0);
+    for (std::uint32_t v = 0; v < n; ++v) {
+        const std::uint32_t i = order.input_index[spatial.vertex_input_index[v]];
+        key[v] = {seen[i] != 0, i};
+        seen[i] = 1;
+    }
+    std::vector<std::uint32_t> by_key(n);
+    std::iota(by_key.begin(), by_key.end(), 0U);
+    std::stable_sort(by_key.begin(), by_key.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+    std::vector<std::uint32_t> new_index(n);
+    for (std::uint32_t k = 0; k < n; ++k) new_index[by_key[k]] = k;
+
+    for (int threads : {1, 2, 8}) {
+        Reconstruction mesh = spatial;
+        ReconstructionReport report;
+        restore_input_order(order, mesh, report, {threads, nullptr});
+        ASSERT_EQ(mesh.vertex_input_index.size(), n);
+        for (std::uint32_t v = 0; v < n; ++v) {
+            ASSERT_EQ(mesh.vertex_input_index[new_index[v]], key[v].second) << v;
+            ASSERT_EQ(mesh.vertex_normals[new_index[v]], spatial.vertex_normals[v]) << v;
+        }
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+            for (int k = 0; k < 3; ++k)
+                ASSERT_EQ(mesh.triangles[t][k], new_index[spatial.triangles[t][k]]) << t;
+    }
 }
 
 class InputOrder : public ::testing::TestWithParam<Method> {};
