@@ -29,7 +29,7 @@ struct MeshStats {
     std::size_t non_manifold_vertices = 0;         ///< whose triangles form more than one fan
     std::size_t inconsistently_oriented_edges = 0; ///< two triangles traversing it the same way
     std::size_t degenerate_faces = 0;              ///< repeating a vertex
-    std::vector<ComponentTopology> components;     ///< edge-connected, ordered by smallest vertex
+    std::vector<ComponentTopology> components;     ///< edge-connected, by their first triangle
     long euler() const { return long(vertices) - long(edges) + long(faces); }
 };
 
