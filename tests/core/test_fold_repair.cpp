@@ -3,10 +3,13 @@
 #include "mesh/fold_repair.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/self_intersections.h"
+#include "mesh/welding.h"
 #include "reconstruction.h"
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <random>
 #include <tuple>
 
 namespace hrsr {
@@ -109,6 +112,36 @@ TEST(FoldRepair, SameResultOnOneAndTwoThreads) {
     EXPECT_EQ(one, two);
     EXPECT_EQ(a.flips, b.flips);
     EXPECT_EQ(a.pairs_after, b.pairs_after);
+}
+
+// The fold search welds vertices at one position by a parallel sort: every thread count gives
+// the sequential sort's representatives (the smallest index at each position).
+TEST(FoldRepair, WeldingInParallelGivesTheSequentialRepresentatives) {
+    std::mt19937 random(7);
+    std::uniform_int_distribution<int> coordinate(0, 40); // a coarse lattice: many repeats
+    std::vector<Vec3> positions;
+    for (int i = 0; i < 60000; ++i)
+        positions.emplace_back(coordinate(random), coordinate(random) * 0.5,
+                               coordinate(random) % 3);
+    std::vector<Triangle> triangles;
+    for (std::uint32_t i = 0; i + 2 < positions.size(); i += 3)
+        triangles.push_back({i, i + 2, i + 1});
+    std::map<std::tuple<double, double, double>, std::uint32_t> first; // the reference
+    std::vector<std::uint32_t> expected;
+    for (std::uint32_t v = 0; v < positions.size(); ++v)
+        expected.push_back(
+            first.emplace(std::make_tuple(positions[v][0], positions[v][1], positions[v][2]), v)
+                .first->second);
+    ASSERT_LT(first.size(), positions.size() / 2); // most vertices repeat a position
+    const std::vector<std::uint32_t> sequential = same_position_representatives(positions);
+    EXPECT_EQ(sequential, expected);
+    for (int threads : {1, 2, 8}) {
+        EXPECT_EQ(same_position_representatives(positions, {threads, nullptr}), sequential)
+            << threads;
+        EXPECT_EQ(welded_triangles(triangles, sequential, {threads, nullptr}),
+                  welded_triangles(triangles, sequential))
+            << threads;
+    }
 }
 
 TEST(FoldRepair, NothingToDoOnACleanMeshOrWithZeroRounds) {

@@ -110,9 +110,9 @@ public:
     // `search` holds the pairs left on the mesh `triangles` and the grid that found them.
     Remover(FoldSearch& search, const std::vector<Vec3>& normals,
             const std::vector<Triangle>& triangles)
-        : positions_(search.positions), normals_(normals), triangles_(triangles),
-          original_faces_(triangles.size()), representative_(search.representative),
-          geometry_(search.geometry), grid_(search.grid),
+        : positions_(search.positions), exec_(search.exec), normals_(normals),
+          triangles_(triangles), original_faces_(triangles.size()),
+          representative_(search.representative), geometry_(search.geometry), grid_(search.grid),
           at_(corners_by_vertex(positions_.size(), triangles)), alive_(triangles.size(), 1),
           pairs_(search.pairs) {
         index_pairs();
@@ -155,7 +155,8 @@ public:
             if (!alive_[f] || f >= original_faces_)
                 for (std::uint32_t v : triangles_[f]) changed[v] = 1;
         FoldRemoval out;
-        out.vertex_source = compact_and_split_vertices(positions_.size(), triangles, &changed);
+        out.vertex_source =
+            compact_and_split_vertices(positions_.size(), triangles, &changed, exec_);
         std::vector<std::uint8_t> seen(positions_.size(), 0);
         for (std::uint32_t v : out.vertex_source) {
             stats.vertex_copies += seen[v];
@@ -1106,6 +1107,7 @@ private:
     }
 
     const std::vector<Vec3>& positions_;
+    const Execution exec_; ///< for the passes over the whole mesh
     const std::vector<Vec3>& normals_;
     std::vector<Triangle> triangles_;  ///< by vertex; faces added at the end
     const std::size_t original_faces_; ///< the faces given; later ones were added

@@ -5,9 +5,10 @@
 namespace hrsr {
 
 FoldSearch::FoldSearch(const std::vector<Vec3>& positions_, const std::vector<Triangle>& triangles,
-                       const Execution& exec)
-    : positions(positions_), representative(same_position_representatives(positions_)),
-      geometry(positions_, welded_triangles(triangles, representative)), grid(geometry, exec),
-      pairs(grid.all_pairs(geometry, exec)) {}
+                       const Execution& exec_)
+    : positions(positions_), exec{exec_.threads, nullptr},
+      representative(same_position_representatives(positions_, exec)),
+      geometry(positions_, welded_triangles(triangles, representative, exec)),
+      grid(geometry, exec_), pairs(grid.all_pairs(geometry, exec_)) {}
 
 } // namespace hrsr

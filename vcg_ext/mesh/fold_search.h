@@ -21,6 +21,7 @@ struct FoldSearch {
                const Execution& exec);
 
     const std::vector<Vec3>& positions;
+    const Execution exec; ///< the threads the repair's whole-mesh passes use (no progress)
     const std::vector<std::uint32_t> representative; ///< per vertex: the first at its position
     TriangleGeometry geometry;       ///< the triangles over representatives, kept up to date
     TriangleGrid grid;               ///< changed and added faces are filed again

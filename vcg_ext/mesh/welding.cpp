@@ -1,11 +1,18 @@
 #include "mesh/welding.h"
 
 #include <algorithm>
+#include <functional>
+#include <parallel/algorithm>
 #include <tuple>
 
 namespace hrsr {
 
 std::vector<std::uint32_t> same_position_representatives(const std::vector<Vec3>& p) {
+    return same_position_representatives(p, Execution{1, nullptr});
+}
+
+std::vector<std::uint32_t> same_position_representatives(const std::vector<Vec3>& p,
+                                                         const Execution& exec) {
     // Sorted as values next to their index: the comparisons then read memory in order (sorting
     // indices that look their positions up was a tenth of the fold search on the lion).
     struct Keyed {
@@ -15,9 +22,15 @@ std::vector<std::uint32_t> same_position_representatives(const std::vector<Vec3>
             return std::tie(x, y, z, i) < std::tie(o.x, o.y, o.z, o.i);
         }
     };
+    // (position, index) orders every vertex, so any sort gives this one order.
     std::vector<Keyed> order(p.size());
-    for (std::uint32_t i = 0; i < p.size(); ++i) order[i] = {p[i][0], p[i][1], p[i][2], i};
-    std::sort(order.begin(), order.end());
+    parallel_for_blocks({exec.threads, nullptr}, p.size(), kCheapBlock,
+                        [&](std::size_t, std::size_t first, std::size_t end) {
+                            for (std::size_t i = first; i < end; ++i)
+                                order[i] = {p[i][0], p[i][1], p[i][2], std::uint32_t(i)};
+                        });
+    __gnu_parallel::sort(order.begin(), order.end(), std::less<Keyed>(),
+                         __gnu_parallel::balanced_quicksort_tag(thread_count(exec)));
     std::vector<std::uint32_t> representative(p.size());
     for (std::size_t s = 0; s < order.size(); ++s) {
         const Keyed& k = order[s];
@@ -30,9 +43,19 @@ std::vector<std::uint32_t> same_position_representatives(const std::vector<Vec3>
 
 std::vector<Triangle> welded_triangles(const std::vector<Triangle>& triangles,
                                        const std::vector<std::uint32_t>& representative) {
+    return welded_triangles(triangles, representative, Execution{1, nullptr});
+}
+
+std::vector<Triangle> welded_triangles(const std::vector<Triangle>& triangles,
+                                       const std::vector<std::uint32_t>& representative,
+                                       const Execution& exec) {
     std::vector<Triangle> w(triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) w[t][k] = representative[triangles[t][k]];
+    parallel_for_blocks({exec.threads, nullptr}, triangles.size(), kCheapBlock,
+                        [&](std::size_t, std::size_t first, std::size_t end) {
+                            for (std::size_t t = first; t < end; ++t)
+                                for (int k = 0; k < 3; ++k)
+                                    w[t][k] = representative[triangles[t][k]];
+                        });
     return w;
 }
 
