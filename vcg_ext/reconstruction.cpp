@@ -17,6 +17,7 @@
 #include "preprocess/pca_normals.h"
 #include "preprocess/preprocess.h"
 #include "rsr/candidate_graph.h"
+#include "rsr/handles.h"
 #include "rsr/reconstruct_cloud.h"
 
 #include <algorithm>
@@ -179,9 +180,10 @@ std::size_t append_points_in_no_triangle(const PreparedCloud& cloud,
 
 // The fold repair on the finished mesh, on the coordinates as written: one search for the
 // intersecting pairs, D-26's flips, then D-32 cuts out what they left, so that the written mesh
-// has no intersecting pair. rounds = 0 turns both off.
+// has no intersecting pair. rounds = 0 turns both off. D-45 closes the loops of at most
+// `pinhole_edges` of pieces closed but for them (kMaxFilledLoop: none).
 void repair_and_remove_folds(const PointSet& input, const PreparedCloud& cloud, int rounds,
-                             const Execution& exec, Reconstruction& mesh,
+                             std::size_t pinhole_edges, const Execution& exec, Reconstruction& mesh,
                              ReconstructionReport& report) {
     if (rounds <= 0 || mesh.triangles.size() < 2) return;
     if (exec.progress) exec.progress->begin("fold repair");
@@ -192,7 +194,7 @@ void repair_and_remove_folds(const PointSet& input, const PreparedCloud& cloud, 
     timer.emplace(report.timings, "fold repair");
     report.fold_repair = repair_folds(search, mesh.triangles, rounds);
     timer.emplace(report.timings, "fold removal");
-    FoldRemoval removal = remove_folds(search, mesh.vertex_normals, mesh.triangles);
+    FoldRemoval removal = remove_folds(search, mesh.vertex_normals, mesh.triangles, pinhole_edges);
     take_fold_removal(input, removal, given, mesh, report);
 }
 
@@ -450,7 +452,8 @@ Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const E
     report.vertex_copies = m.copies;
     Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
     assembly.reset();
-    repair_and_remove_folds(input, cloud, options.fold_repair_rounds, exec, mesh, report);
+    repair_and_remove_folds(input, cloud, options.fold_repair_rounds, kMaxFilledLoop, exec, mesh,
+                            report);
     clear_flat_output_faces(input, mesh, exec, report);
     restore_input_normals(input, report.preprocess, mesh);
     return {std::move(mesh), cloud.normalisation};
@@ -532,7 +535,14 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
     for (VertexIndex v : out.vertex_point) vertex_point.push_back(fine.vertex_node[v]);
     Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles));
     assembly.reset();
-    repair_and_remove_folds(input, cloud, options.rsr.fold_repair_rounds, exec, mesh, report);
+    // D-45: the loops of a piece closed but for loops no longer than a handle must be to stay
+    // (D-27's hop limit on the input cloud) are pinholes of the coarse sampling that the
+    // re-expansion widened into slits beyond D-28's fans.
+    const std::size_t pinhole_edges =
+        std::max(kMaxFilledLoop,
+                 rsr::handle_hop_limit(options.rsr.min_handle_loop, cloud.size(), cloud.size()));
+    repair_and_remove_folds(input, cloud, options.rsr.fold_repair_rounds, pinhole_edges, exec, mesh,
+                            report);
     clear_flat_output_faces(input, mesh, exec, report);
     return {std::move(mesh), cloud.normalisation};
 }

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace hrsr {
@@ -266,6 +267,64 @@ TEST(FoldRemoval, APointBeyondAStraightBorderJoinsIt) {
     const MeshStats s = expect_placed(m, normals, patch_vertices, 2, 2).mesh;
     EXPECT_EQ(s.boundary_edges, 34u);
     EXPECT_EQ(s.boundary_loops, 1u);
+}
+
+// `m` without vertex v and its faces (the vertices after v move down by one).
+TestMesh without_fan(TestMesh m, std::uint32_t v) {
+    std::vector<Triangle> kept;
+    for (Triangle t : m.triangles) {
+        if (std::find(t.begin(), t.end(), v) != t.end()) continue;
+        for (std::uint32_t& w : t) w -= w > v;
+        kept.push_back(t);
+    }
+    m.triangles = kept;
+    m.positions.erase(m.positions.begin() + v);
+    return m;
+}
+
+// `b` appended to `a`.
+TestMesh joined(TestMesh a, const TestMesh& b) {
+    const auto offset = std::uint32_t(a.positions.size());
+    a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+    for (Triangle t : b.triangles)
+        a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    return a;
+}
+
+// D-45 (HRsR): a piece closed but for loops of at most `pinhole_edges` edges is
+// closed, every vertex kept; a patch whose outer border is longer keeps its 8-edge inner hole
+// too, and a tent with more border than interior vertices (8 against 1) keeps its border.
+TEST(FoldRemoval, PinholesOfAClosedPieceCloseOtherBordersStay) {
+    const TestMesh sphere = without_fan(testing::uv_sphere(8, 10), 0); // a 10-edge hole
+    // Two neighbouring inner vertices (5, 5) and (5, 6) of the 11 × 11 grid go: an 8-edge hole
+    // in a patch with a 40-edge border.
+    const TestMesh holed_patch = without_fan(without_fan(testing::square_patch(10), 60), 60);
+    TestMesh tent; // an octagonal pyramid: a cap under it would fit
+    tent.positions.emplace_back(0, 0, 0.3);
+    for (std::uint32_t k = 0; k < 8; ++k) {
+        tent.positions.emplace_back(std::cos(k * M_PI / 4), std::sin(k * M_PI / 4), 0);
+        tent.triangles.push_back({0, 1 + k, 1 + (k + 1) % 8});
+    }
+    const TestMesh m = joined(joined(sphere, testing::shifted(holed_patch, Vec3(3, 0, 0))),
+                              testing::shifted(tent, Vec3(5, 0, 0)));
+    for (const std::size_t pinhole_edges : {kMaxFilledLoop, std::size_t(20)}) {
+        std::vector<Triangle> triangles = m.triangles;
+        const FoldRemoval r =
+            remove_folds(m.positions, face_normals_at_vertices(m), triangles, {}, pinhole_edges);
+        ASSERT_EQ(r.vertex_source.size(), m.positions.size()); // no vertex lost
+        std::vector<Vec3> positions;
+        for (std::uint32_t v : r.vertex_source) positions.push_back(m.positions[v]);
+        EXPECT_TRUE(self_intersecting_pairs(positions, triangles, {}).empty());
+        const MeshStats s = measure_mesh(positions.size(), triangles);
+        EXPECT_EQ(s.non_manifold_edges + s.non_manifold_vertices, 0u);
+        EXPECT_EQ(s.inconsistently_oriented_edges, 0u);
+        ASSERT_EQ(s.components.size(), 3u);
+        const bool closes = pinhole_edges >= 10;
+        EXPECT_EQ(r.stats.small_holes_closed, closes ? 1u : 0u);
+        EXPECT_EQ(s.boundary_edges, (closes ? 0u : 10u) + 40u + 8u + 8u);
+        EXPECT_EQ(s.boundary_loops, closes ? 3u : 4u);
+        EXPECT_EQ(genera(s), (std::vector<long>{0, 0, 0}));
+    }
 }
 
 // The shipped sample at the defaults, both methods: the written coordinates (float) have no

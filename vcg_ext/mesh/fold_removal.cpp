@@ -1,6 +1,7 @@
 #include "mesh/fold_removal.h"
 
 #include "geometry.h"
+#include "graph/neighbour_graph.h"
 #include "mesh/fans.h"
 #include "mesh/small_holes_fill.h"
 #include "mesh/triangle_grid.h"
@@ -109,10 +110,11 @@ class Remover {
 public:
     // `search` holds the pairs left on the mesh `triangles` and the grid that found them.
     Remover(FoldSearch& search, const std::vector<Vec3>& normals,
-            const std::vector<Triangle>& triangles)
-        : positions_(search.positions), exec_(search.exec), normals_(normals),
-          triangles_(triangles), original_faces_(triangles.size()),
-          representative_(search.representative), geometry_(search.geometry), grid_(search.grid),
+            const std::vector<Triangle>& triangles, std::size_t pinhole_edges)
+        : pinhole_edges_(std::max(pinhole_edges, kMaxFilledLoop)), positions_(search.positions),
+          exec_(search.exec), normals_(normals), triangles_(triangles),
+          original_faces_(triangles.size()), representative_(search.representative),
+          geometry_(search.geometry), grid_(search.grid),
           at_(corners_by_vertex(positions_.size(), triangles)), alive_(triangles.size(), 1),
           pairs_(search.pairs) {
         index_pairs();
@@ -135,6 +137,7 @@ public:
         close_small_cut_holes(stats);
         close_small_holes_left(stats);
         put_back_the_rest();
+        close_pinholes(stats);
         stats.vertices_reinserted = reinserted_;
         stats.points_placed = placed_;
         stats.vertices_removed -= reinserted_;
@@ -277,31 +280,131 @@ private:
     // those take out must all go back at once (put_back), or the closing is undone: a gap is
     // not worth a point.
     void close_small_holes_left(FoldRemovalStats& stats) {
-        // Only border vertices start a loop: those of the given mesh, and the corners of faces
-        // added or cut (the quick tests first: most vertices are neither).
-        std::vector<std::uint8_t> tried(positions_.size(), 0), changed(positions_.size(), 0);
+        std::vector<std::uint8_t> tried(positions_.size(), 0);
+        for (std::uint32_t v : border_candidates())
+            if (!tried[v] && !faces_of(v).empty()) close_loop_at(v, kMaxFilledLoop, tried, stats);
+    }
+
+    // D-45: once every other vertex is back, the loops longer than kMaxFilledLoop and no longer
+    // than pinhole_edges_ of a piece whose every border loop is so short (as D-39 on the coarse
+    // mesh) are closed as D-38 closes a gap, at most a vertex per kMaxFilledLoop edges left out.
+    // Last, so that no vertex the earlier steps placed is kept out by their fills.
+    void close_pinholes(FoldRemovalStats& stats) {
+        if (pinhole_edges_ <= kMaxFilledLoop) return;
+        const std::vector<std::uint32_t> starts = border_candidates();
+        std::vector<std::size_t> loop_edges(starts.size());
+        bool any = false;
+        for (std::size_t i = 0; i < starts.size(); ++i) {
+            loop_edges[i] = border_loop_edges(starts[i], pinhole_edges_);
+            any = any || (loop_edges[i] > kMaxFilledLoop && loop_edges[i] <= pinhole_edges_);
+        }
+        if (!any) return; // most meshes: no pass over the faces
+        const std::vector<std::uint8_t> closed_but_for_pinholes =
+            pieces_closed_but_for_pinholes(starts, loop_edges);
+        std::vector<std::uint8_t> tried(positions_.size(), 0);
+        for (std::size_t i = 0; i < starts.size(); ++i) {
+            const std::uint32_t v = starts[i];
+            if (!tried[v] && loop_edges[i] > kMaxFilledLoop && loop_edges[i] <= pinhole_edges_ &&
+                closed_but_for_pinholes[v] && !faces_of(v).empty())
+                close_loop_at(v, pinhole_edges_, tried, stats,
+                              std::size_t(loop_edges[i]) / kMaxFilledLoop);
+        }
+    }
+
+    // The vertices a border loop may start at: those on the border of the given mesh, and the
+    // corners of faces added or cut (the quick tests first: most vertices are neither).
+    std::vector<std::uint32_t> border_candidates() const {
+        std::vector<std::uint8_t> changed(positions_.size(), 0);
         for (std::size_t f = 0; f < triangles_.size(); ++f)
             if (!alive_[f] || f >= original_faces_)
                 for (std::uint32_t v : triangles_[f]) changed[v] = 1;
         const std::vector<std::int64_t> open_fan = given_fan_ends();
-        for (std::uint32_t v = 0; v < positions_.size(); ++v) {
-            if (tried[v] || (!changed[v] && open_fan[v] == 0) || faces_of(v).empty()) continue;
-            const std::optional<Hole> hole = small_hole(v, false);
-            if (!hole) continue;
-            for (std::uint32_t c : hole->corners) tried[c] = 1;
-            // A lone triangle's outline: the fill would repeat the triangle.
-            if (hole->corners.size() == 3 &&
-                repeats_a_face({hole->corners[2], hole->corners[1], hole->corners[0]}))
-                continue;
-            const Undo undo = begin_undo();
-            if (close_small_hole(*hole) && put_back_taken_out())
-                ++stats.small_holes_closed;
-            else
-                rewind(undo);
-            retired_log_.reset();
-            // Every vertex it took out is back: none counts as removed or put back.
-            reinserted_ = undo.reinserted;
+        std::vector<std::uint32_t> out;
+        for (std::uint32_t v = 0; v < positions_.size(); ++v)
+            if (changed[v] || open_fan[v] != 0) out.push_back(v);
+        return out;
+    }
+
+    // Closes the loop through v of at most `limit` edges, if there is one, as D-38 does; at
+    // most `may_lose` of the vertices it takes out may stay out.
+    void close_loop_at(std::uint32_t v, std::size_t limit, std::vector<std::uint8_t>& tried,
+                       FoldRemovalStats& stats, std::size_t may_lose = 0) {
+        const std::optional<Hole> hole = small_hole(v, false, limit);
+        if (!hole) return;
+        for (std::uint32_t c : hole->corners) tried[c] = 1;
+        // A lone triangle's outline: the fill would repeat the triangle.
+        if (hole->corners.size() == 3 &&
+            repeats_a_face({hole->corners[2], hole->corners[1], hole->corners[0]}))
+            return;
+        const Undo undo = begin_undo();
+        std::size_t lost = 0;
+        bool closed = close_small_hole(*hole, limit);
+        if (closed && may_lose == 0) {
+            closed = put_back_taken_out();
+        } else if (closed) {
+            for (std::uint32_t r : taken_out()) lost += !put_back(r);
+            closed = lost <= may_lose;
         }
+        if (closed) {
+            ++stats.small_holes_closed;
+            stats.vertices_removed += lost;
+        } else {
+            rewind(undo);
+        }
+        retired_log_.reset();
+        // Every vertex it took out is back (or lost, counted as removed): none counts as put back.
+        reinserted_ = undo.reinserted;
+    }
+
+    // Per vertex, whether its piece (connected by standing faces) is closed but for loops of
+    // at most pinhole_edges_: every border loop of it that short, none through a vertex with
+    // two border edges out, and more interior than border vertices (D-39's test of a closed
+    // coarse piece). `loop_edges` are those of border_loop_edges() at the `starts`.
+    std::vector<std::uint8_t>
+    pieces_closed_but_for_pinholes(const std::vector<std::uint32_t>& starts,
+                                   const std::vector<std::size_t>& loop_edges) const {
+        const auto n = std::uint32_t(positions_.size());
+        DisjointSets pieces(n);
+        std::vector<std::uint8_t> used(n, 0);
+        for (std::size_t f = 0; f < triangles_.size(); ++f)
+            if (alive_[f]) {
+                const Triangle& t = triangles_[f];
+                pieces.unite(t[0], t[1]);
+                pieces.unite(t[1], t[2]);
+                used[t[0]] = used[t[1]] = used[t[2]] = 1;
+            }
+        std::vector<std::int64_t> interior_minus_border(n, 0);
+        std::vector<std::uint8_t> long_loop(n, 0);
+        for (std::uint32_t v = 0; v < n; ++v)
+            if (used[v]) ++interior_minus_border[pieces.find(v)];
+        for (std::size_t i = 0; i < starts.size(); ++i) {
+            if (loop_edges[i] == 0) continue; // not on the border (any more)
+            const std::uint32_t root = pieces.find(starts[i]);
+            interior_minus_border[root] -= 2; // counted as interior above
+            if (loop_edges[i] > pinhole_edges_) long_loop[root] = 1;
+        }
+        std::vector<std::uint8_t> closed(n, 0);
+        for (std::uint32_t v = 0; v < n; ++v) {
+            const std::uint32_t root = pieces.find(v);
+            closed[v] = used[v] && !long_loop[root] && interior_minus_border[root] > 0;
+        }
+        return closed;
+    }
+
+    // The edges of the border loop through v when it closes within `limit` edges; limit + 1
+    // for a longer loop or one through a vertex with two border edges out; 0 when v has no
+    // border edge out.
+    std::size_t border_loop_edges(std::uint32_t v, std::size_t limit) const {
+        std::uint32_t a = v;
+        for (std::size_t edges = 1; edges <= limit; ++edges) {
+            std::size_t out = 0;
+            const std::optional<std::uint32_t> next = border_successor(a, &out);
+            if (out == 0 && a == v) return 0;
+            if (!next) return limit + 1;
+            if (*next == v) return edges;
+            a = *next;
+        }
+        return limit + 1;
     }
 
     // Per vertex of the given mesh (one fan each): the sum of its faces' next corners minus the
@@ -320,13 +423,13 @@ private:
 
     // Closes a short loop; a corner's fan filled with it may only shrink it (the fill joins the
     // corner's neighbours on the loop), so what is left is tried again.
-    bool close_small_hole(Hole hole) {
-        for (std::size_t step = 0; step < kMaxFilledLoop; ++step) {
+    bool close_small_hole(Hole hole, std::size_t limit) {
+        for (std::size_t step = 0; step < limit; ++step) {
             if (close_hole(hole)) return true;
             if (close_around(hole.corners) == 0) return false;
             std::optional<Hole> rest;
             for (std::uint32_t c : hole.corners)
-                if (!rest && !faces_of(c).empty()) rest = small_hole(c, false);
+                if (!rest && !faces_of(c).empty()) rest = small_hole(c, false, limit);
             if (!rest || rest->corners.size() >= hole.corners.size()) return !rest;
             hole = *rest;
         }
@@ -346,13 +449,19 @@ private:
     // Every vertex the faces retired since begin_undo() left without a face goes back over a
     // face near it, or false.
     bool put_back_taken_out() {
+        const std::vector<std::uint32_t> out = taken_out();
+        return std::all_of(out.begin(), out.end(), [&](std::uint32_t v) { return put_back(v); });
+    }
+
+    // The vertices the faces retired since begin_undo() left without a face.
+    std::vector<std::uint32_t> taken_out() const {
         std::vector<std::uint32_t> out;
         for (std::uint32_t f : *retired_log_)
             for (std::uint32_t v : triangles_[f])
                 if (representative_[v] == v && faces_of(v).empty()) out.push_back(v);
         std::sort(out.begin(), out.end());
         out.erase(std::unique(out.begin(), out.end()), out.end());
-        return std::all_of(out.begin(), out.end(), [&](std::uint32_t v) { return put_back(v); });
+        return out;
     }
 
     // The faces stand as they did at `undo`.
@@ -411,10 +520,11 @@ private:
 
     // The short border loop that leaves v, as the hole a fill closes; with `cut_only`, only a
     // loop as small_cut_hole() takes it.
-    std::optional<Hole> small_hole(std::uint32_t v, bool cut_only) const {
+    std::optional<Hole> small_hole(std::uint32_t v, bool cut_only,
+                                   std::size_t limit = kMaxFilledLoop) const {
         std::vector<std::uint32_t> loop{v};
         bool along_a_cut = false;
-        for (std::size_t step = 0; step <= kMaxFilledLoop; ++step) {
+        for (std::size_t step = 0; step <= limit; ++step) {
             const std::uint32_t a = loop.back();
             const std::optional<std::uint32_t> next = border_successor(a);
             if (!next || (cut_only && given_edge(a, *next) && !given_edge(*next, a)))
@@ -433,20 +543,23 @@ private:
         return std::nullopt;
     }
 
-    // The one border edge a→b leaving a (a standing face holds a→b, none b→a), if exactly one.
-    std::optional<std::uint32_t> border_successor(std::uint32_t a) const {
+    // The one border edge a→b leaving a (a standing face holds a→b, none b→a), if exactly one;
+    // `out`, if given, gets how many leave a.
+    std::optional<std::uint32_t> border_successor(std::uint32_t a,
+                                                  std::size_t* out = nullptr) const {
         std::optional<std::uint32_t> found;
-        bool several = false;
+        std::size_t count = 0;
         any_face(a, [&](const Triangle& t) {
             const auto k = std::size_t(std::find(t.begin(), t.end(), a) - t.begin());
             const std::uint32_t b = t[(k + 1) % 3];
             if (!has_directed_edge(b, a)) {
-                several = several || found.has_value();
+                ++count;
                 found = b;
             }
             return false;
         });
-        if (several) return std::nullopt;
+        if (out) *out = count;
+        if (count > 1) return std::nullopt;
         return found;
     }
 
@@ -1106,6 +1219,7 @@ private:
         grid_.file_again(geometry_.box(welded(t)), f);
     }
 
+    const std::size_t pinhole_edges_; ///< D-45's loops on pieces closed but for them
     const std::vector<Vec3>& positions_;
     const Execution exec_; ///< for the passes over the whole mesh
     const std::vector<Vec3>& normals_;
@@ -1133,22 +1247,23 @@ private:
 } // namespace
 
 FoldRemoval remove_folds(FoldSearch& search, const std::vector<Vec3>& normals,
-                         std::vector<Triangle>& triangles) {
-    Remover remover(search, normals, triangles);
+                         std::vector<Triangle>& triangles, std::size_t pinhole_edges) {
+    Remover remover(search, normals, triangles, pinhole_edges);
     FoldRemovalStats stats;
     remover.run(stats);
     return remover.result(triangles, stats);
 }
 
 FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
-                         std::vector<Triangle>& triangles, const Execution& exec) {
+                         std::vector<Triangle>& triangles, const Execution& exec,
+                         std::size_t pinhole_edges) {
     FoldRemoval out;
     if (triangles.size() < 2) {
         for (std::uint32_t v = 0; v < positions.size(); ++v) out.vertex_source.push_back(v);
         return out;
     }
     FoldSearch search(positions, triangles, exec);
-    return remove_folds(search, normals, triangles);
+    return remove_folds(search, normals, triangles, pinhole_edges);
 }
 
 } // namespace hrsr

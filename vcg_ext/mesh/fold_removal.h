@@ -3,6 +3,7 @@
 #pragma once
 
 #include "mesh/fold_search.h"
+#include "mesh/small_holes_fill.h"
 #include "mesh/triangle_mesh.h"
 #include "parallel.h"
 #include "point_set.h"
@@ -39,14 +40,18 @@ struct FoldRemoval {
 /// and every vertex it takes out goes back at once, else they stay as they were (D-38). Last,
 /// the vertices taken out and those given without any face (D-37: points in no triangle) go into
 /// a standing face near them, or close a border corner next to them, where that fits; vertices
-/// still without a face are not in the result. Two faces on the same three positions are a pair
-/// (a fin folded flat onto a face through a pinched copy).
+/// still without a face are not in the result. Then (D-45) the loops of more than 5 edges of a
+/// piece whose every border loop has at most `pinhole_edges` edges (and more interior than
+/// border vertices) are closed so too, leaving out at most a vertex per 5 edges. Two faces on
+/// the same three positions are a pair (a fin folded flat onto a face through a pinched copy).
 FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
-                         std::vector<Triangle>& triangles, const Execution& exec);
+                         std::vector<Triangle>& triangles, const Execution& exec,
+                         std::size_t pinhole_edges = kMaxFilledLoop);
 
 /// The same on pairs already found (after repair_folds() on the same search, its pairs left):
 /// `search` must be built over `triangles` as they are now. New faces are added to it.
 FoldRemoval remove_folds(FoldSearch& search, const std::vector<Vec3>& normals,
-                         std::vector<Triangle>& triangles);
+                         std::vector<Triangle>& triangles,
+                         std::size_t pinhole_edges = kMaxFilledLoop);
 
 } // namespace hrsr
