@@ -1,7 +1,6 @@
 #include "mesh/fold_removal.h"
 
 #include "geometry.h"
-#include "graph/neighbour_graph.h"
 #include "mesh/fans.h"
 #include "mesh/small_holes_fill.h"
 #include "mesh/triangle_grid.h"
@@ -10,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <tuple>
 #include <unordered_map>
@@ -116,7 +116,7 @@ public:
           original_faces_(triangles.size()), representative_(search.representative),
           geometry_(search.geometry), grid_(search.grid),
           at_(corners_by_vertex(positions_.size(), triangles)), alive_(triangles.size(), 1),
-          pairs_(search.pairs) {
+          touched_(positions_.size(), 0), pairs_(search.pairs) {
         index_pairs();
         for (std::uint32_t v = 0; v < representative_.size(); ++v)
             if (representative_[v] != v) copies_[representative_[v]].push_back(v);
@@ -292,12 +292,10 @@ private:
     void close_pinholes(FoldRemovalStats& stats) {
         if (pinhole_edges_ <= kMaxFilledLoop) return;
         const std::vector<std::uint32_t> starts = border_candidates();
-        std::vector<std::size_t> loop_edges(starts.size());
+        const std::vector<std::size_t> loop_edges = border_loops_at(starts, pinhole_edges_);
         bool any = false;
-        for (std::size_t i = 0; i < starts.size(); ++i) {
-            loop_edges[i] = border_loop_edges(starts[i], pinhole_edges_);
-            any = any || (loop_edges[i] > kMaxFilledLoop && loop_edges[i] <= pinhole_edges_);
-        }
+        for (std::size_t edges : loop_edges)
+            any = any || (edges > kMaxFilledLoop && edges <= pinhole_edges_);
         if (!any) return; // most meshes: no pass over the faces
         const std::vector<std::uint8_t> closed_but_for_pinholes =
             pieces_closed_but_for_pinholes(starts, loop_edges);
@@ -305,23 +303,24 @@ private:
         for (std::size_t i = 0; i < starts.size(); ++i) {
             const std::uint32_t v = starts[i];
             if (!tried[v] && loop_edges[i] > kMaxFilledLoop && loop_edges[i] <= pinhole_edges_ &&
-                closed_but_for_pinholes[v] && !faces_of(v).empty())
+                closed_but_for_pinholes[i] && !faces_of(v).empty())
                 close_loop_at(v, pinhole_edges_, tried, stats,
                               std::size_t(loop_edges[i]) / kMaxFilledLoop);
         }
     }
 
     // The vertices a border loop may start at: those on the border of the given mesh, and the
-    // corners of faces added or cut (the quick tests first: most vertices are neither).
-    std::vector<std::uint32_t> border_candidates() const {
-        std::vector<std::uint8_t> changed(positions_.size(), 0);
-        for (std::size_t f = 0; f < triangles_.size(); ++f)
-            if (!alive_[f] || f >= original_faces_)
-                for (std::uint32_t v : triangles_[f]) changed[v] = 1;
-        const std::vector<std::int64_t> open_fan = given_fan_ends();
+    // corners of faces ever added or cut (the quick tests first: most vertices are neither; a
+    // vertex whose cut faces all stand again has its given faces, and its given border).
+    std::vector<std::uint32_t> border_candidates() {
+        if (given_border_.empty()) {
+            const std::vector<std::int64_t> open_fan = given_fan_ends();
+            given_border_.resize(open_fan.size());
+            for (std::size_t v = 0; v < open_fan.size(); ++v) given_border_[v] = open_fan[v] != 0;
+        }
         std::vector<std::uint32_t> out;
         for (std::uint32_t v = 0; v < positions_.size(); ++v)
-            if (changed[v] || open_fan[v] != 0) out.push_back(v);
+            if (touched_[v] || given_border_[v]) out.push_back(v);
         return out;
     }
 
@@ -356,55 +355,90 @@ private:
         reinserted_ = undo.reinserted;
     }
 
-    // Per vertex, whether its piece (connected by standing faces) is closed but for loops of
-    // at most pinhole_edges_: every border loop of it that short, none through a vertex with
-    // two border edges out, and more interior than border vertices (D-39's test of a closed
-    // coarse piece). `loop_edges` are those of border_loop_edges() at the `starts`.
+    // Per start, whether its piece (connected by standing faces) is closed but for loops of at
+    // most pinhole_edges_: every border loop of it that short, none through a vertex with two
+    // border edges out, and more interior than border vertices (D-39's test of a closed coarse
+    // piece). `loop_edges` are those of border_loops_at() at the `starts`. One pass over the
+    // faces joins the pieces (union-find, the smaller index the root, halving the paths).
     std::vector<std::uint8_t>
     pieces_closed_but_for_pinholes(const std::vector<std::uint32_t>& starts,
                                    const std::vector<std::size_t>& loop_edges) const {
         const auto n = std::uint32_t(positions_.size());
-        DisjointSets pieces(n);
-        std::vector<std::uint8_t> used(n, 0);
+        std::vector<std::uint32_t> parent(n);
+        std::iota(parent.begin(), parent.end(), 0u);
+        const auto find = [&](std::uint32_t x) {
+            while (parent[x] != x) x = parent[x] = parent[parent[x]];
+            return x;
+        };
+        const auto unite = [&](std::uint32_t a, std::uint32_t b) {
+            a = find(a);
+            b = find(b);
+            if (a != b) parent[std::max(a, b)] = std::min(a, b);
+        };
+        std::vector<std::int32_t> interior_minus_border(n, 0);
         for (std::size_t f = 0; f < triangles_.size(); ++f)
             if (alive_[f]) {
                 const Triangle& t = triangles_[f];
-                pieces.unite(t[0], t[1]);
-                pieces.unite(t[1], t[2]);
-                used[t[0]] = used[t[1]] = used[t[2]] = 1;
+                unite(t[0], t[1]);
+                unite(t[1], t[2]);
+                for (std::uint32_t v : t) interior_minus_border[v] = 1; // used
             }
-        std::vector<std::int64_t> interior_minus_border(n, 0);
-        std::vector<std::uint8_t> long_loop(n, 0);
         for (std::uint32_t v = 0; v < n; ++v)
-            if (used[v]) ++interior_minus_border[pieces.find(v)];
+            if (interior_minus_border[v] == 1 && parent[v] != v) {
+                interior_minus_border[v] = 0;
+                ++interior_minus_border[find(v)];
+            }
+        std::vector<std::uint8_t> long_loop(n, 0);
         for (std::size_t i = 0; i < starts.size(); ++i) {
             if (loop_edges[i] == 0) continue; // not on the border (any more)
-            const std::uint32_t root = pieces.find(starts[i]);
+            const std::uint32_t root = find(starts[i]);
             interior_minus_border[root] -= 2; // counted as interior above
             if (loop_edges[i] > pinhole_edges_) long_loop[root] = 1;
         }
-        std::vector<std::uint8_t> closed(n, 0);
-        for (std::uint32_t v = 0; v < n; ++v) {
-            const std::uint32_t root = pieces.find(v);
-            closed[v] = used[v] && !long_loop[root] && interior_minus_border[root] > 0;
+        std::vector<std::uint8_t> closed(starts.size(), 0);
+        for (std::size_t i = 0; i < starts.size(); ++i) {
+            const std::uint32_t root = find(starts[i]);
+            closed[i] = !long_loop[root] && interior_minus_border[root] > 0;
         }
         return closed;
     }
 
-    // The edges of the border loop through v when it closes within `limit` edges; limit + 1
-    // for a longer loop or one through a vertex with two border edges out; 0 when v has no
-    // border edge out.
-    std::size_t border_loop_edges(std::uint32_t v, std::size_t limit) const {
-        std::uint32_t a = v;
-        for (std::size_t edges = 1; edges <= limit; ++edges) {
-            std::size_t out = 0;
-            const std::optional<std::uint32_t> next = border_successor(a, &out);
-            if (out == 0 && a == v) return 0;
-            if (!next) return limit + 1;
-            if (*next == v) return edges;
-            a = *next;
+    // Per start v: the edges of the border loop through v when it closes within `limit` edges;
+    // limit + 1 for a longer loop or one through a vertex with two border edges out; 0 when v
+    // has no border edge out. Each walk gives its outcome to every vertex it passes: a vertex
+    // with one border edge in has one out (its fans' ends pair up), so the walks from them
+    // follow the same chain and end alike (a chain that met itself elsewhere than at its start
+    // would pass a vertex with two edges in, hence two out, where every walk stops).
+    std::vector<std::size_t> border_loops_at(const std::vector<std::uint32_t>& starts,
+                                             std::size_t limit) const {
+        constexpr std::size_t kUnknown = ~std::size_t(0);
+        std::unordered_map<std::uint32_t, std::size_t> known;
+        std::vector<std::size_t> edges_at(starts.size());
+        std::vector<std::uint32_t> path;
+        for (std::size_t i = 0; i < starts.size(); ++i) {
+            const std::uint32_t v = starts[i];
+            if (const auto it = known.find(v); it != known.end()) {
+                edges_at[i] = it->second;
+                continue;
+            }
+            path.assign(1, v);
+            std::size_t outcome = kUnknown;
+            for (std::uint32_t a = v; outcome == kUnknown;) {
+                std::size_t out = 0;
+                const std::optional<std::uint32_t> next = border_successor(a, &out);
+                if (out == 0 && a == v)
+                    outcome = 0;
+                else if (!next || path.size() > limit)
+                    outcome = limit + 1;
+                else if (*next == v)
+                    outcome = path.size();
+                else
+                    path.push_back(a = *next);
+            }
+            for (std::uint32_t w : path) known[w] = outcome;
+            edges_at[i] = outcome;
         }
-        return limit + 1;
+        return edges_at;
     }
 
     // Per vertex of the given mesh (one fan each): the sum of its faces' next corners minus the
@@ -1203,6 +1237,7 @@ private:
     // A face leaves the mesh: the pairs it was in are gone.
     void retire(std::uint32_t f) {
         alive_[f] = 0;
+        for (std::uint32_t v : triangles_[f]) touched_[v] = 1;
         if (retired_log_) retired_log_->push_back(f);
         if (f + 1 >= partner_start_.size()) return; // a new face is in no pair
         for (std::uint32_t e = partner_start_[f]; e < partner_start_[f + 1]; ++e)
@@ -1215,7 +1250,10 @@ private:
         geometry_.add(welded(t));
         alive_.push_back(1);
         live_pairs_.push_back(0);
-        for (std::uint32_t v : t) added_at_[v].push_back(f);
+        for (std::uint32_t v : t) {
+            added_at_[v].push_back(f);
+            touched_[v] = 1;
+        }
         grid_.file_again(geometry_.box(welded(t)), f);
     }
 
@@ -1233,6 +1271,8 @@ private:
     const VertexCorners at_;     ///< the given faces around each vertex
     std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> added_at_;
     std::vector<std::uint8_t> alive_;
+    std::vector<std::uint8_t> touched_;      ///< per vertex: a corner of a face cut or added
+    std::vector<std::uint8_t> given_border_; ///< per vertex: on the given mesh's border (lazy)
     const std::vector<TrianglePair>& pairs_;
     std::vector<std::uint32_t> partner_start_, partner_, live_pairs_;
     FacesNearBox near_;                      ///< gather_standing()'s faces
