@@ -297,6 +297,12 @@ TEST(PcdReader, BadFilesAreErrors) {
     expect_error(read_pcd, "ply\nformat ascii 1.0\n", "unknown keyword 'ply'");
     expect_error(read_pcd, "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\n", "before its DATA");
     expect_error(read_pcd, "", "empty file");
+    // A header running to the file's end (no newline after DATA) that claims 10^15 points: an
+    // error before any block is allocated (fuzz_read_pcd found the allocation, session 27).
+    expect_error(read_pcd,
+                 "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\n"
+                 "HEIGHT 250000000000000\nDATA binary",
+                 "truncated");
     expect_error(read_pcd, c.header("zip"), "unknown DATA 'zip'");
 }
 

@@ -322,11 +322,20 @@ std::vector<unsigned char> read_block(std::istream& in, std::uint64_t n, const s
     if (left && *left < n)
         fail(name, "truncated: " + what + " needs " + std::to_string(n) + " bytes, the file has " +
                        std::to_string(*left) + " left");
-    std::vector<unsigned char> bytes(static_cast<std::size_t>(n));
-    in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(n));
-    if (static_cast<std::uint64_t>(in.gcount()) != n)
-        fail(name, "truncated: " + what + " ends after " + std::to_string(in.gcount()) + " of " +
-                       std::to_string(n) + " bytes");
+    // Where the stream cannot tell how much it holds, the block grows as its bytes arrive: a
+    // header's claim allocates nothing the file does not hold.
+    constexpr std::uint64_t kChunk = std::uint64_t(1) << 26;
+    std::vector<unsigned char> bytes;
+    while (bytes.size() < n) {
+        const std::size_t at = bytes.size();
+        const std::uint64_t want = left ? n : std::min<std::uint64_t>(n - at, kChunk);
+        bytes.resize(at + static_cast<std::size_t>(want));
+        in.read(reinterpret_cast<char*>(bytes.data() + at), static_cast<std::streamsize>(want));
+        if (static_cast<std::uint64_t>(in.gcount()) != want)
+            fail(name, "truncated: " + what + " ends after " +
+                           std::to_string(at + std::size_t(in.gcount())) + " of " +
+                           std::to_string(n) + " bytes");
+    }
     return bytes;
 }
 

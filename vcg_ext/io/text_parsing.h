@@ -140,6 +140,9 @@ private:
 /// The bytes left in a stream from its read position, if it can tell (files and string streams
 /// can). Lets readers check a header's sizes before allocating for them.
 inline std::optional<std::uint64_t> remaining_bytes(std::istream& in) {
+    // A header read up to the end of the data (its last line without a newline) leaves the
+    // stream at its end: nothing is left, though tellg() cannot say where that is.
+    if (in.eof()) return 0;
     const std::streampos here = in.tellg();
     in.seekg(0, std::ios::end);
     const std::streampos end = in.tellg();
