@@ -1,6 +1,7 @@
 #include "mesh/fold_removal.h"
 
 #include "geometry.h"
+#include "graph/neighbour_graph.h"
 #include "mesh/fans.h"
 #include "mesh/small_holes_fill.h"
 #include "mesh/triangle_grid.h"
@@ -9,7 +10,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <optional>
 #include <tuple>
 #include <unordered_map>
@@ -359,45 +359,35 @@ private:
     // most pinhole_edges_: every border loop of it that short, none through a vertex with two
     // border edges out, and more interior than border vertices (D-39's test of a closed coarse
     // piece). `loop_edges` are those of border_loops_at() at the `starts`. One pass over the
-    // faces joins the pieces (union-find, the smaller index the root, halving the paths).
+    // faces joins the pieces.
     std::vector<std::uint8_t>
     pieces_closed_but_for_pinholes(const std::vector<std::uint32_t>& starts,
                                    const std::vector<std::size_t>& loop_edges) const {
         const auto n = std::uint32_t(positions_.size());
-        std::vector<std::uint32_t> parent(n);
-        std::iota(parent.begin(), parent.end(), 0u);
-        const auto find = [&](std::uint32_t x) {
-            while (parent[x] != x) x = parent[x] = parent[parent[x]];
-            return x;
-        };
-        const auto unite = [&](std::uint32_t a, std::uint32_t b) {
-            a = find(a);
-            b = find(b);
-            if (a != b) parent[std::max(a, b)] = std::min(a, b);
-        };
+        DisjointSets pieces(n);
         std::vector<std::int32_t> interior_minus_border(n, 0);
         for (std::size_t f = 0; f < triangles_.size(); ++f)
             if (alive_[f]) {
                 const Triangle& t = triangles_[f];
-                unite(t[0], t[1]);
-                unite(t[1], t[2]);
+                pieces.unite(t[0], t[1]);
+                pieces.unite(t[1], t[2]);
                 for (std::uint32_t v : t) interior_minus_border[v] = 1; // used
             }
         for (std::uint32_t v = 0; v < n; ++v)
-            if (interior_minus_border[v] == 1 && parent[v] != v) {
+            if (interior_minus_border[v] == 1 && pieces.find(v) != v) {
                 interior_minus_border[v] = 0;
-                ++interior_minus_border[find(v)];
+                ++interior_minus_border[pieces.find(v)];
             }
         std::vector<std::uint8_t> long_loop(n, 0);
         for (std::size_t i = 0; i < starts.size(); ++i) {
             if (loop_edges[i] == 0) continue; // not on the border (any more)
-            const std::uint32_t root = find(starts[i]);
+            const std::uint32_t root = pieces.find(starts[i]);
             interior_minus_border[root] -= 2; // counted as interior above
             if (loop_edges[i] > pinhole_edges_) long_loop[root] = 1;
         }
         std::vector<std::uint8_t> closed(starts.size(), 0);
         for (std::size_t i = 0; i < starts.size(); ++i) {
-            const std::uint32_t root = find(starts[i]);
+            const std::uint32_t root = pieces.find(starts[i]);
             closed[i] = !long_loop[root] && interior_minus_border[root] > 0;
         }
         return closed;
