@@ -291,6 +291,20 @@ TestMesh joined(TestMesh a, const TestMesh& b) {
     return a;
 }
 
+// After remove_folds on a mesh without folds: every vertex kept, no intersecting pair, a
+// consistently oriented manifold. Returns the result's measure.
+MeshStats kept_and_clean(const TestMesh& m, const FoldRemoval& r,
+                         const std::vector<Triangle>& triangles) {
+    EXPECT_EQ(r.vertex_source.size(), m.positions.size()); // no vertex lost
+    std::vector<Vec3> positions;
+    for (std::uint32_t v : r.vertex_source) positions.push_back(m.positions[v]);
+    EXPECT_TRUE(self_intersecting_pairs(positions, triangles, {}).empty());
+    const MeshStats s = measure_mesh(positions.size(), triangles);
+    EXPECT_EQ(s.non_manifold_edges + s.non_manifold_vertices, 0u);
+    EXPECT_EQ(s.inconsistently_oriented_edges, 0u);
+    return s;
+}
+
 // D-45 (HRsR): a piece closed but for loops of at most `pinhole_edges` edges is
 // closed, every vertex kept; a patch whose outer border is longer keeps its 8-edge inner hole
 // too, and a tent with more border than interior vertices (8 against 1) keeps its border.
@@ -311,19 +325,27 @@ TEST(FoldRemoval, PinholesOfAClosedPieceCloseOtherBordersStay) {
         std::vector<Triangle> triangles = m.triangles;
         const FoldRemoval r =
             remove_folds(m.positions, face_normals_at_vertices(m), triangles, {}, pinhole_edges);
-        ASSERT_EQ(r.vertex_source.size(), m.positions.size()); // no vertex lost
-        std::vector<Vec3> positions;
-        for (std::uint32_t v : r.vertex_source) positions.push_back(m.positions[v]);
-        EXPECT_TRUE(self_intersecting_pairs(positions, triangles, {}).empty());
-        const MeshStats s = measure_mesh(positions.size(), triangles);
-        EXPECT_EQ(s.non_manifold_edges + s.non_manifold_vertices, 0u);
-        EXPECT_EQ(s.inconsistently_oriented_edges, 0u);
+        const MeshStats s = kept_and_clean(m, r, triangles);
         ASSERT_EQ(s.components.size(), 3u);
         const bool closes = pinhole_edges >= 10;
         EXPECT_EQ(r.stats.small_holes_closed, closes ? 1u : 0u);
         EXPECT_EQ(s.boundary_edges, (closes ? 0u : 10u) + 40u + 8u + 8u);
         EXPECT_EQ(s.boundary_loops, closes ? 3u : 4u);
         EXPECT_EQ(genera(s), (std::vector<long>{0, 0, 0}));
+    }
+}
+
+// D-38: a gap of up to six edges is closed after the folds, every vertex kept; seven edges is
+// beyond it (and beyond D-45, which is off here: pinhole_edges at D-28's five).
+TEST(FoldRemoval, GapsOfUpToSixEdgesClose) {
+    for (const int edges : {5, 6, 7}) {
+        const TestMesh m = without_fan(testing::uv_sphere(8, edges), 0);
+        std::vector<Triangle> triangles = m.triangles;
+        const FoldRemoval r = remove_folds(m.positions, face_normals_at_vertices(m), triangles, {});
+        const MeshStats s = kept_and_clean(m, r, triangles);
+        const bool closes = edges <= 6;
+        EXPECT_EQ(r.stats.small_holes_closed, closes ? 1u : 0u) << edges;
+        EXPECT_EQ(s.boundary_edges, closes ? 0u : std::size_t(edges)) << edges;
     }
 }
 

@@ -34,6 +34,11 @@ constexpr double kMaxPutBackHeight = 0.5;
 // a border edge (D-41), only if no angle of them is smaller (a sliver hanging off the border is
 // worse than a point left out).
 constexpr double kMinBorderPutBackAngle = 15.0 * M_PI / 180.0;
+// D-38: the gaps closed after the folds have up to six edges, one more than D-28's fill takes
+// (the walk has taken six since D-38 was written; its measurements were made so). Five only left
+// bunny 119 → 125, lion 3,393 → 3,425, LMS400 table 5,434 → 5,476 boundary edges
+// (docs/BENCHMARKS.md, session 28).
+constexpr std::size_t kMaxClosedGap = kMaxFilledLoop + 1;
 // A walk around a vertex's fan gives up after this many faces (a fan is far smaller).
 constexpr std::size_t kMaxFanWalk = 1024;
 constexpr std::uint32_t kNoFace = ~0u;
@@ -252,7 +257,7 @@ private:
 
     // The holes that cuts left inside the mesh and close_cut did not close: several cuts next
     // to each other leave one hole that is no single cut face's. A border loop through a cut
-    // face's corner, of at most kMaxFilledLoop edges, along a cut face and with no edge on the
+    // face's corner, of at most kMaxClosedGap edges, along a cut face and with no edge on the
     // border of the given mesh (a hole of a closed surface, as D-28 closes them), is
     // triangulated across, or else closed as close_cut closes a cut face's hole: a corner's fan
     // filled together with it, then a disc of fans near it.
@@ -273,7 +278,7 @@ private:
         }
     }
 
-    // D-38: a border loop of at most kMaxFilledLoop edges is a gap of about a spacing (D-28),
+    // D-38: a border loop of at most kMaxClosedGap edges is a gap of about a spacing (D-28),
     // whichever phase left it; D-28's fans cross the mesh where the faces around it fold over
     // the gap. Such a loop is closed the way close_cut closes a cut face's hole: triangulated
     // across, else a corner's fan filled with it, else a disc of fans near it; the vertices
@@ -282,7 +287,7 @@ private:
     void close_small_holes_left(FoldRemovalStats& stats) {
         std::vector<std::uint8_t> tried(positions_.size(), 0);
         for (std::uint32_t v : border_candidates())
-            if (!tried[v] && !faces_of(v).empty()) close_loop_at(v, kMaxFilledLoop, tried, stats);
+            if (!tried[v] && !faces_of(v).empty()) close_loop_at(v, kMaxClosedGap, tried, stats);
     }
 
     // D-45: once every other vertex is back, the loops longer than kMaxFilledLoop and no longer
@@ -540,15 +545,16 @@ private:
     // the order of the faces that would fill it), if it is short, runs along a cut face (an edge
     // whose other face in the given mesh has gone) and has no edge that was on the border of the
     // given mesh (fills make edges the given mesh did not have).
-    std::optional<Hole> small_cut_hole(std::uint32_t v) const { return small_hole(v, true); }
+    std::optional<Hole> small_cut_hole(std::uint32_t v) const {
+        return small_hole(v, true, kMaxClosedGap);
+    }
 
-    // The short border loop that leaves v, as the hole a fill closes; with `cut_only`, only a
-    // loop as small_cut_hole() takes it.
-    std::optional<Hole> small_hole(std::uint32_t v, bool cut_only,
-                                   std::size_t limit = kMaxFilledLoop) const {
+    // The border loop of at most `limit` edges that leaves v, as the hole a fill closes; with
+    // `cut_only`, only a loop as small_cut_hole() takes it.
+    std::optional<Hole> small_hole(std::uint32_t v, bool cut_only, std::size_t limit) const {
         std::vector<std::uint32_t> loop{v};
         bool along_a_cut = false;
-        for (std::size_t step = 0; step <= limit; ++step) {
+        for (std::size_t step = 0; step < limit; ++step) { // step k adds the (k + 1)-th edge
             const std::uint32_t a = loop.back();
             const std::optional<std::uint32_t> next = border_successor(a);
             if (!next || (cut_only && given_edge(a, *next) && !given_edge(*next, a)))
