@@ -437,7 +437,8 @@ Reconstruction finished(const PointSet& input, const InSpatialOrder& ordered, bo
 // RsR's mesh of `input` (in spatial order), before it is measured.
 Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const Execution& exec,
                        ReconstructionReport& report, rsr::Observer* observer) {
-    const PreparedCloud cloud = preprocess(input, options.preprocess, exec, report.preprocess);
+    const PreparedCloud cloud =
+        preprocess(input, options.preprocess, exec, report.preprocess, InputOrder::Spatial);
     report.points_used = cloud.size();
     report.timings = report.preprocess.timings;
     rsr::CloudMesh rsr_mesh = rsr::reconstruct_cloud(cloud, options, exec, observer);
@@ -465,8 +466,8 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
                         const Execution& exec, ReconstructionReport& report,
                         rsr::Observer* observer, ReexpansionObserver* reexpansion_observer) {
     const PreprocessOptions& pre = options.rsr.preprocess;
-    const PreparedCloud cloud =
-        prepare_points(input, pre, exec, report.preprocess, nullptr, PrepareFor::Collapse);
+    const PreparedCloud cloud = prepare_points(input, pre, exec, report.preprocess, nullptr,
+                                               PrepareFor::Collapse, InputOrder::Spatial);
     std::vector<Vec3>().swap(input.normals);
     report.points_used = cloud.size();
     report.timings = report.preprocess.timings;

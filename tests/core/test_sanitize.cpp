@@ -3,6 +3,7 @@
 #include "preprocess/near_duplicates.h"
 #include "preprocess/sanitize.h"
 #include "samplers.h"
+#include "spatial_order.h"
 
 #include <gtest/gtest.h>
 
@@ -263,20 +264,28 @@ TEST(NearDuplicates, ScreenedSearchIsExactAcrossTheScreensCells) {
 // The exact duplicates are found by a parallel sort (issue 20): 200,000 points, every tenth
 // repeating an earlier one and every 25th 1e-13 off one (D-25 merges it at 1e-11 of the diagonal)
 // give the same fates, representatives and cloud for any thread count.
-TEST(Sanitize, AnyThreadCountMergesTheSameDuplicates) {
-    std::mt19937 random(24);
+// n points in [-1, 1]³ (normals up); every `copy_every`-th is a copy of a random earlier point,
+// else every `shifted_every`-th such a copy moved by `shift`.
+PointSet cloud_with_copies(std::size_t n, unsigned seed, std::size_t copy_every,
+                           std::size_t shifted_every, const Vec3& shift) {
+    std::mt19937 random(seed);
     std::uniform_real_distribution<double> where(-1, 1);
     PointSet s;
-    for (std::size_t i = 0; i < 200000; ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
         std::uniform_int_distribution<std::size_t> earlier(0, i == 0 ? 0 : i - 1);
-        if (i % 10 == 9)
+        if (i % copy_every == copy_every - 1)
             s.positions.push_back(s.positions[earlier(random)]);
-        else if (i % 25 == 24)
-            s.positions.push_back(s.positions[earlier(random)] + Vec3(1e-13, 0, 0));
+        else if (i % shifted_every == shifted_every - 1)
+            s.positions.push_back(s.positions[earlier(random)] + shift);
         else
             s.positions.emplace_back(where(random), where(random), where(random));
         s.normals.emplace_back(0, 0, 1);
     }
+    return s;
+}
+
+TEST(Sanitize, AnyThreadCountMergesTheSameDuplicates) {
+    const PointSet s = cloud_with_copies(200000, 24, 10, 25, Vec3(1e-13, 0, 0));
     PreprocessReport one;
     const SanitizedCloud first = sanitize(s, {}, one);
     EXPECT_EQ(one.count(PointFate::Duplicate), 200000u / 10 + 200000u / 25 - 200000u / 50);
@@ -290,6 +299,27 @@ TEST(Sanitize, AnyThreadCountMergesTheSameDuplicates) {
         EXPECT_EQ(c.positions, first.positions) << threads;
         EXPECT_EQ(c.normals, first.normals) << threads;
     }
+}
+
+// D-40: in spatial order the duplicates are found by one pass over neighbours; the same fates,
+// representatives and cloud as the sort of every point gives, with copies of points far apart in
+// the input, signed zeros and non-finite points among them.
+TEST(Sanitize, SpatialOrderMergesTheDuplicatesTheSortMerges) {
+    // Copies, and points made non-finite (a NaN shift), among random points.
+    PointSet input =
+        cloud_with_copies(50000, 28, 7, 101, Vec3(std::numeric_limits<double>::quiet_NaN(), 0, 0));
+    input.positions[10] = Vec3(0.0, 0.5, 0.25);
+    input.positions[20] = Vec3(-0.0, 0.5, 0.25); // equal to point 10
+    const PointSet ordered = reordered(input, spatial_order(input.positions, {}));
+    PreprocessReport sorted, scanned;
+    const SanitizedCloud a = sanitize(ordered, {}, sorted, {2, nullptr}, InputOrder::Any);
+    const SanitizedCloud b = sanitize(ordered, {}, scanned, {2, nullptr}, InputOrder::Spatial);
+    EXPECT_GT(sorted.count(PointFate::Duplicate), 6000u); // copies of NaN are not duplicates
+    EXPECT_EQ(scanned.fate, sorted.fate);
+    EXPECT_EQ(scanned.duplicate_of, sorted.duplicate_of);
+    EXPECT_EQ(scanned.warnings, sorted.warnings);
+    EXPECT_EQ(b.input_index.values(), a.input_index.values());
+    EXPECT_EQ(b.positions, a.positions);
 }
 
 } // namespace

@@ -151,12 +151,12 @@ CsrGraph neighbour_graph(const std::vector<Vec3>& positions, int k, const Execut
 
 PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& options,
                              const Execution& exec, PreprocessReport& report, CsrGraph* graph,
-                             PrepareFor purpose) {
+                             PrepareFor purpose, InputOrder order) {
     validate(options);
     PreparedCloud cloud;
     {
         Phase phase(exec, report, "validation");
-        SanitizedCloud clean = sanitize(input, options, report, exec);
+        SanitizedCloud clean = sanitize(input, options, report, exec, order);
         cloud.input_index = std::move(clean.input_index);
         cloud.positions = std::move(clean.positions);
         cloud.normals = std::move(clean.normals);
@@ -302,9 +302,10 @@ void record_split(const ComponentSplit& split, const Normalisation& normalisatio
 }
 
 PreparedCloud preprocess(const PointSet& input, const PreprocessOptions& options,
-                         const Execution& exec, PreprocessReport& report) {
+                         const Execution& exec, PreprocessReport& report, InputOrder order) {
     CsrGraph graph;
-    PreparedCloud cloud = prepare_points(input, options, exec, report, &graph);
+    PreparedCloud cloud =
+        prepare_points(input, options, exec, report, &graph, PrepareFor::Rsr, order);
     ComponentSplit split;
     {
         Phase phase(exec, report, "component split");

@@ -62,7 +62,8 @@ enum class PrepareFor {
 /// InvalidInput (nothing usable left) or Cancelled.
 PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& options,
                              const Execution& exec, PreprocessReport& report,
-                             CsrGraph* graph = nullptr, PrepareFor purpose = PrepareFor::Rsr);
+                             CsrGraph* graph = nullptr, PrepareFor purpose = PrepareFor::Rsr,
+                             InputOrder order = InputOrder::Any);
 
 /// Tangent mode: two smoothing rounds with the normals fixed (§4.4, §7); Euclidean mode: a copy.
 /// `index_of_positions`, if given, is a kd-tree on `positions` the first round uses.
@@ -78,7 +79,8 @@ CsrGraph neighbour_graph(const std::vector<Vec3>& positions, int k, const Execut
 /// The whole stage: prepare_points, then the component split with the r cut (§4.6). Returns
 /// only the points of kept components; every other input point has its fate in the report.
 PreparedCloud preprocess(const PointSet& input, const PreprocessOptions& options,
-                         const Execution& exec, PreprocessReport& report);
+                         const Execution& exec, PreprocessReport& report,
+                         InputOrder order = InputOrder::Any);
 
 /// The points of `cloud` in kept components, labelled with their component, in the same order;
 /// `dropped` receives the input_index of every other point.

@@ -27,6 +27,11 @@ struct SanitizedCloud {
     Normalisation normalisation;
 };
 
+/// The order a cloud comes in. `Spatial`: as spatial_order() leaves it (D-40), points with
+/// equal positions next to each other in index order, so that exact duplicates are found in one
+/// pass instead of a sort of all points.
+enum class InputOrder { Any, Spatial };
+
 /// Drops non-finite points, checks the normals (falling back to estimation, with a warning in
 /// the report, when any is unusable), merges exact duplicates into their first occurrence, and
 /// normalises coordinates. Fills the report's per-point fates. Throws InvalidInput when no
@@ -34,6 +39,7 @@ struct SanitizedCloud {
 /// the duplicate sort, the normalisation and the near-duplicate screen (the same result for any
 /// count; its progress is not used).
 SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
-                        PreprocessReport& report, const Execution& exec = Execution{1, nullptr});
+                        PreprocessReport& report, const Execution& exec = Execution{1, nullptr},
+                        InputOrder order = InputOrder::Any);
 
 } // namespace hrsr
