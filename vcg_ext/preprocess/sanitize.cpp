@@ -37,10 +37,26 @@ std::string unusable_normals_reason(const PointSet& input, const std::vector<Poi
            " zero-length input normals";
 }
 
-// Exact duplicates (D-3): the first occurrence represents all equal points. The points are
-// sorted as records with their coordinates (twice as fast as indices compared through the
-// positions, measured on the 3.2M dragon); (position, index) orders every pair of points, so
-// the parallel sort gives the sequential order for any thread count.
+// Exact duplicates (D-3) in a sequence where equal kept points follow each other in index order:
+// each run's first point represents the rest.
+template <class Sequence>
+void merge_runs(const Sequence& sequence, const PointSet& input, PreprocessReport& report) {
+    bool have_previous = false;
+    std::uint32_t previous = 0;
+    for (const std::uint32_t i : sequence) {
+        if (report.fate[i] != PointFate::Kept) continue;
+        if (have_previous && input.positions[previous] == input.positions[i]) {
+            report.fate[i] = PointFate::Duplicate;
+            report.duplicate_of[i] = report.duplicate_of[previous];
+        }
+        previous = i;
+        have_previous = true;
+    }
+}
+
+// Any order: the kept points sorted as records with their coordinates (twice as fast as indices
+// compared through the positions, measured on the 3.2M dragon); (position, index) orders every
+// pair of points, so the parallel sort gives the sequential order for any thread count.
 void merge_duplicates(const PointSet& input, const Execution& exec, PreprocessReport& report) {
     struct Record {
         Vec3 p;
@@ -57,31 +73,18 @@ void merge_duplicates(const PointSet& input, const Execution& exec, PreprocessRe
     };
     __gnu_parallel::sort(order.begin(), order.end(), less,
                          __gnu_parallel::balanced_quicksort_tag(thread_count(exec)));
-    for (std::size_t s = 1; s < order.size(); ++s) {
-        const Record &prev = order[s - 1], &cur = order[s];
-        if (prev.p == cur.p) {
-            report.fate[cur.index] = PointFate::Duplicate;
-            report.duplicate_of[cur.index] =
-                report.duplicate_of[prev.index]; // runs sorted by index
-        }
-    }
+    std::vector<std::uint32_t> sorted(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = order[k].index;
+    merge_runs(sorted, input, report);
 }
 
-// The same for a cloud in spatial order (InputOrder::Spatial): the sort above would leave the
-// kept points where they are, so the runs of equal neighbours are the duplicates. That sort was
-// 0.34 s of the 3.2M dragon sample's 0.76 s of validation (docs/BENCHMARKS.md, session 28).
+// In spatial order (InputOrder::Spatial) the sort above would leave the kept points where they
+// are, so the runs are found in one pass. That sort was 0.34 s of the 3.2M dragon sample's 0.76 s
+// of validation (docs/BENCHMARKS.md, session 28).
 void merge_adjacent_duplicates(const PointSet& input, PreprocessReport& report) {
-    std::uint32_t previous = 0;
-    bool have_previous = false;
-    for (std::uint32_t i = 0; i < input.size(); ++i) {
-        if (report.fate[i] != PointFate::Kept) continue;
-        if (have_previous && input.positions[previous] == input.positions[i]) {
-            report.fate[i] = PointFate::Duplicate;
-            report.duplicate_of[i] = report.duplicate_of[previous];
-        }
-        previous = i;
-        have_previous = true;
-    }
+    std::vector<std::uint32_t> all(input.size());
+    std::iota(all.begin(), all.end(), 0u);
+    merge_runs(all, input, report);
 }
 
 Normalisation bounding_box_normalisation(const std::vector<Vec3>& points, double& diagonal) {
