@@ -1,5 +1,7 @@
 #include "spatial_order.h"
 
+#include "radix_pass.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -36,17 +38,13 @@ struct Keyed {
 };
 
 // A stable radix sort on the key, a byte at a time (bytes all points share are skipped): equal
-// keys keep the order they came in.
-void sort_by_key(std::vector<Keyed>& items) {
-    std::vector<Keyed> buffer(items.size());
-    for (int shift = 0; shift < 64; shift += 8) {
-        std::array<std::size_t, 257> start{};
-        for (const Keyed& k : items) ++start[((k.key >> shift) & 0xff) + 1];
-        if (std::count(start.begin(), start.end(), items.size()) == 1) continue; // one byte value
-        for (int d = 0; d < 256; ++d) start[std::size_t(d) + 1] += start[std::size_t(d)];
-        for (const Keyed& k : items) buffer[start[(k.key >> shift) & 0xff]++] = k;
-        items.swap(buffer);
-    }
+// keys keep the order they came in, for any thread count.
+void sort_by_key(std::vector<Keyed>& items, const Execution& exec) {
+    std::vector<Keyed> buffer;
+    for (int shift = 0; shift < 64; shift += 8)
+        stable_radix_pass(
+            items, buffer, [shift](const Keyed& k) { return std::size_t(k.key >> shift) & 0xff; },
+            exec);
 }
 
 // The box the curve spans: the finite points' bounding box, cut down on an axis where points lie
@@ -117,7 +115,7 @@ SpatialOrder spatial_order(const std::vector<Vec3>& positions, const Execution& 
         }
         items[i] = {key, std::uint32_t(i)};
     });
-    sort_by_key(items);
+    sort_by_key(items, exec);
     order_within_cells(positions, items);
     SpatialOrder order;
     order.input_index.reserve(items.size());

@@ -1,8 +1,11 @@
 // Fans at a vertex (§5.8): the whole-mesh count and the count restricted to flagged vertices,
 // which D-32 uses for the corners of the faces it cut or added.
 #include "mesh/fans.h"
+#include "mesh/triangle_mesh.h"
 
 #include <gtest/gtest.h>
+
+#include <random>
 
 namespace hrsr {
 namespace {
@@ -67,6 +70,25 @@ TEST(Fans, AnyThreadCountNumbersTheSameFans) {
     std::size_t bow_ties = 0;
     for (std::uint32_t b = 0; b < 5000; ++b) bow_ties += one.fan_count[10 * b] == 2;
     EXPECT_EQ(bow_ties, 5000u);
+}
+
+// The corners around each vertex built by one task per range of vertices are the sequential
+// lists exactly (each vertex's corners in increasing order), for any thread count.
+TEST(CornersByVertex, RangesOfVerticesGiveTheSequentialLists) {
+    std::mt19937 random(7);
+    const std::uint32_t n = 50000;
+    std::uniform_int_distribution<std::uint32_t> vertex(0, n - 1);
+    std::vector<Triangle> triangles(200000); // over the parallel threshold
+    for (Triangle& t : triangles) t = {vertex(random), vertex(random), vertex(random)};
+    const VertexCorners sequential = corners_by_vertex(n, triangles);
+    for (int threads : {2, 3, 8}) {
+        const VertexCorners ranges = corners_by_vertex(n, triangles, Execution{threads});
+        EXPECT_EQ(ranges.start, sequential.start) << threads << " threads";
+        EXPECT_EQ(ranges.corner, sequential.corner) << threads << " threads";
+    }
+    for (std::uint32_t v = 0; v < n; ++v)
+        for (std::uint32_t e = sequential.begin(v); e < sequential.end(v); ++e)
+            ASSERT_EQ(triangles[sequential.corner[e] / 3][sequential.corner[e] % 3], v);
 }
 
 } // namespace

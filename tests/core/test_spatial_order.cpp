@@ -63,6 +63,22 @@ TEST(SpatialOrder, NeighboursInTheOrderAreNearInSpace) {
     EXPECT_LT(mean_step(s, order.input_index, s.size()), 4 * spacing);
 }
 
+// The radix sort counts and scatters by blocks of points in parallel: the order is the same for
+// any thread count (here over 12 blocks, with exact duplicates spread across them).
+TEST(SpatialOrder, SameOrderForAnyThreadCount) {
+    PointSet s = testing::sample_sphere(180000);
+    for (std::size_t i = 0; i < 20000; ++i) s.positions.push_back(s.positions[i * 7]);
+    const SpatialOrder one = spatial_order(s.positions, Execution{1});
+    std::vector<std::uint32_t> sorted = one.input_index;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<std::uint32_t> input(s.size());
+    std::iota(input.begin(), input.end(), 0u);
+    ASSERT_EQ(sorted, input); // a permutation
+    for (int threads : {2, 8})
+        EXPECT_EQ(spatial_order(s.positions, Execution{threads}).input_index, one.input_index)
+            << threads << " threads";
+}
+
 // A far outlier is clamped into the outermost cells instead of stretching the grid (a cell would
 // be a quarter of the sphere): the sphere's points stay in spatial order.
 TEST(SpatialOrder, AFarOutlierDoesNotCoarsenTheCells) {

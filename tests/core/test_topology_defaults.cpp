@@ -327,10 +327,12 @@ INSTANTIATE_TEST_SUITE_P(
                        ::testing::ValuesIn(kMethods)),
     model_case_name);
 
-// A known gap of the camel head (docs/STATUS.md): at p = 0.25 it gains a handle (a group of 40
-// candidates whose endpoints are 15–28 coarse hops apart with normals within 60°). At p = 0.125
-// (the default) it was known to fail too (r_v 99.69 %, session 7) and passes since (found in
-// session 24).
+// A known gap of the camel head (docs/STATUS.md): at p = 0.25 it comes out with genus 2 (session
+// 29: the coarse RsR's face split leaves two faces of 65 and 104 darts that both run around the
+// head through the mouth, and the handle phase joins them; every edge of the coarse mesh whose
+// ends are more than 12 hops apart on the model crosses the lips, 0.004–0.006 apart against a
+// spacing of 0.012). At p = 0.125 (the default) it was known to fail too (r_v 99.69 %, session 7)
+// and passes since (found in session 24).
 INSTANTIATE_TEST_SUITE_P(SharedDataCamelHead, ModelWithBoundaryAtDefaults,
                          ::testing::Combine(::testing::Values(Model{"camelhead_boundary1.ply", -1}),
                                             ::testing::Values(Method{"Rsr", 1.0},

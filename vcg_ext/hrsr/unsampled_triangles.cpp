@@ -30,8 +30,9 @@ double length(const std::vector<Vec3>& points, PointIndex a, PointIndex b) {
 /// The triangles around each vertex, and the triangles on an edge found through them.
 class EdgeTriangles {
 public:
-    EdgeTriangles(const std::vector<Triangle>& triangles, std::size_t vertices)
-        : triangles_(triangles), corners_(corners_by_vertex(vertices, triangles)) {}
+    EdgeTriangles(const std::vector<Triangle>& triangles, std::size_t vertices,
+                  const Execution& exec)
+        : triangles_(triangles), corners_(corners_by_vertex(vertices, triangles, exec)) {}
     template <class Visit>
     void on_edge(std::uint32_t a, std::uint32_t b, Visit&& visit) const {
         for (std::uint32_t i = corners_.begin(a); i < corners_.end(a); ++i) {
@@ -243,7 +244,7 @@ std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
     const std::size_t vertices = vertex_point.size();
     // No progress from the mesh loops (cheap; the reach test reports the phase's fraction).
     const Execution quiet{exec.threads, nullptr};
-    const EdgeTriangles edges(triangles, vertices);
+    const EdgeTriangles edges(triangles, vertices, quiet);
     const std::vector<Screened> queried = screened(edges, points, vertex_point, quiet);
     if (queried.empty() || rank < 1) return 0;
     const KnnIndex index(points);

@@ -49,7 +49,7 @@ private:
 } // namespace
 
 Fans compute_fans(std::size_t n, const std::vector<Triangle>& triangles, const Execution& exec) {
-    const VertexCorners at = corners_by_vertex(n, triangles);
+    const VertexCorners at = corners_by_vertex(n, triangles, {exec.threads, nullptr});
     Fans fans;
     fans.corner_fan.assign(3 * triangles.size(), 0);
     fans.fan_count.assign(n, 0);

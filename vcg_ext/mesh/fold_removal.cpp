@@ -1,7 +1,7 @@
 #include "mesh/fold_removal.h"
 
 #include "geometry.h"
-#include "graph/neighbour_graph.h"
+#include "graph/concurrent_sets.h"
 #include "mesh/fans.h"
 #include "mesh/small_holes_fill.h"
 #include "mesh/triangle_grid.h"
@@ -120,7 +120,7 @@ public:
           exec_(search.exec), normals_(normals), triangles_(triangles),
           original_faces_(triangles.size()), representative_(search.representative),
           geometry_(search.geometry), grid_(search.grid),
-          at_(corners_by_vertex(positions_.size(), triangles)), alive_(triangles.size(), 1),
+          at_(corners_by_vertex(positions_.size(), triangles, exec_)), alive_(triangles.size(), 1),
           touched_(positions_.size(), 0), pairs_(search.pairs) {
         index_pairs();
         for (std::uint32_t v = 0; v < representative_.size(); ++v)
@@ -363,37 +363,57 @@ private:
     // Per start, whether its piece (connected by standing faces) is closed but for loops of at
     // most pinhole_edges_: every border loop of it that short, none through a vertex with two
     // border edges out, and more interior than border vertices (D-39's test of a closed coarse
-    // piece). `loop_edges` are those of border_loops_at() at the `starts`. One pass over the
-    // faces joins the pieces.
+    // piece). `loop_edges` are those of border_loops_at() at the `starts`. The pieces are joined
+    // by parallel blocks of faces (a piece's root is its smallest vertex for any thread count),
+    // and only the starts' pieces have their vertices counted.
     std::vector<std::uint8_t>
     pieces_closed_but_for_pinholes(const std::vector<std::uint32_t>& starts,
                                    const std::vector<std::size_t>& loop_edges) const {
-        const auto n = std::uint32_t(positions_.size());
-        DisjointSets pieces(n);
-        std::vector<std::int32_t> interior_minus_border(n, 0);
-        for (std::size_t f = 0; f < triangles_.size(); ++f)
-            if (alive_[f]) {
-                const Triangle& t = triangles_[f];
-                pieces.unite(t[0], t[1]);
-                pieces.unite(t[1], t[2]);
-                for (std::uint32_t v : t) interior_minus_border[v] = 1; // used
-            }
-        for (std::uint32_t v = 0; v < n; ++v)
-            if (interior_minus_border[v] == 1 && pieces.find(v) != v) {
-                interior_minus_border[v] = 0;
-                ++interior_minus_border[pieces.find(v)];
-            }
-        std::vector<std::uint8_t> long_loop(n, 0);
+        const std::size_t n = positions_.size();
+        ConcurrentSets pieces(n, exec_);
+        parallel_for_blocks(exec_, triangles_.size(), kCheapBlock,
+                            [&](std::size_t, std::size_t first, std::size_t end) {
+                                for (std::size_t f = first; f < end; ++f)
+                                    if (alive_[f]) {
+                                        const Triangle& t = triangles_[f];
+                                        pieces.unite(t[0], t[1]);
+                                        pieces.unite(t[1], t[2]);
+                                    }
+                            });
+        constexpr std::int32_t kNotAsked = -1;
+        std::vector<std::int32_t> slot_of_root(n, kNotAsked);
+        std::vector<std::int32_t> start_slot(starts.size());
+        std::int32_t slots = 0;
+        for (std::size_t i = 0; i < starts.size(); ++i) {
+            std::int32_t& slot = slot_of_root[pieces.find(starts[i])];
+            if (slot == kNotAsked) slot = slots++;
+            start_slot[i] = slot;
+        }
+        // Per slot: the piece's vertices with a standing face, less two per border start.
+        std::vector<std::vector<std::int64_t>> used(block_count(n, kCheapBlock));
+        parallel_for_blocks(
+            exec_, n, kCheapBlock, [&](std::size_t b, std::size_t first, std::size_t end) {
+                used[b].assign(std::size_t(slots), 0);
+                for (auto v = std::uint32_t(first); v < end; ++v) {
+                    const std::int32_t slot = slot_of_root[pieces.find(v)];
+                    if (slot != kNotAsked && any_face(v, [](const Triangle&) { return true; }))
+                        ++used[b][std::size_t(slot)];
+                }
+            });
+        std::vector<std::int64_t> interior_minus_border(std::size_t(slots), 0);
+        for (const std::vector<std::int64_t>& block : used)
+            for (std::size_t s = 0; s < block.size(); ++s) interior_minus_border[s] += block[s];
+        std::vector<std::uint8_t> long_loop(std::size_t(slots), 0);
         for (std::size_t i = 0; i < starts.size(); ++i) {
             if (loop_edges[i] == 0) continue; // not on the border (any more)
-            const std::uint32_t root = pieces.find(starts[i]);
-            interior_minus_border[root] -= 2; // counted as interior above
-            if (loop_edges[i] > pinhole_edges_) long_loop[root] = 1;
+            const auto slot = std::size_t(start_slot[i]);
+            interior_minus_border[slot] -= 2; // counted as interior above
+            if (loop_edges[i] > pinhole_edges_) long_loop[slot] = 1;
         }
         std::vector<std::uint8_t> closed(starts.size(), 0);
         for (std::size_t i = 0; i < starts.size(); ++i) {
-            const std::uint32_t root = pieces.find(starts[i]);
-            closed[i] = !long_loop[root] && interior_minus_border[root] > 0;
+            const auto slot = std::size_t(start_slot[i]);
+            closed[i] = !long_loop[slot] && interior_minus_border[slot] > 0;
         }
         return closed;
     }

@@ -31,9 +31,9 @@ using FaceSlot = Index<struct FaceSlotTag>;
 class Region {
 public:
     Region(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
-           const std::vector<TrianglePair>& pairs, int rings) {
+           const std::vector<TrianglePair>& pairs, int rings, const Execution& exec) {
         const std::size_t n = positions.size();
-        const VertexCorners at = corners_by_vertex(n, triangles);
+        const VertexCorners at = corners_by_vertex(n, triangles, exec);
         // Rings around the pairs' corners, breadth first.
         std::vector<std::uint8_t> depth(n, kFar);
         std::vector<std::uint32_t> reached;
@@ -362,7 +362,7 @@ FoldRepairStats repair_folds(FoldSearch& search, std::vector<Triangle>& triangle
     FoldRepairStats stats;
     stats.pairs_before = stats.pairs_after = search.pairs.size();
     if (search.pairs.empty() || rounds <= 0) return stats;
-    Region region(search.positions, triangles, search.pairs, kRegionRings);
+    Region region(search.positions, triangles, search.pairs, kRegionRings, search.exec);
     Repair(region, search.representative, search.geometry, search.grid)
         .run(search.pairs, rounds, stats);
     if (stats.flips > 0) region.write_back(triangles); // flips keep every face in its slot

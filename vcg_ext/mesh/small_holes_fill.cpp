@@ -34,8 +34,9 @@ struct VertexPositions {
 /// bytes per corner: D-28 runs on the whole output, so its memory counts against the peak).
 class DirectedEdges {
 public:
-    DirectedEdges(const std::vector<Triangle>& triangles, std::size_t vertices)
-        : triangles_(triangles), corners_(corners_by_vertex(vertices, triangles)) {}
+    DirectedEdges(const std::vector<Triangle>& triangles, std::size_t vertices,
+                  const Execution& exec)
+        : triangles_(triangles), corners_(corners_by_vertex(vertices, triangles, exec)) {}
     /// The vertex before b along the hole b borders (see hole_successors), kNone or kMany: the
     /// edges a → b into b are at b's corners, and a → b borders a hole when no b → a exists.
     std::uint32_t hole_successor(std::uint32_t b) const {
@@ -332,7 +333,7 @@ std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector
                                     vertex_point.empty() ? points.size() : vertex_point.size()};
     std::vector<Fill> fills;
     {
-        const DirectedEdges edges(triangles, positions.vertex_count);
+        const DirectedEdges edges(triangles, positions.vertex_count, quiet);
         const std::vector<std::uint32_t> next =
             hole_successors(edges, positions.vertex_count, quiet);
         const std::vector<std::uint8_t> open = scope == SmallHoleScope::PiecesClosedButForThem

@@ -1,5 +1,7 @@
 #include "mesh/triangle_grid.h"
 
+#include "radix_pass.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -128,31 +130,13 @@ std::vector<TrianglePair> TriangleGrid::all_pairs(const TriangleGeometry& g,
 }
 
 // Entries come in face order; a stable radix sort on the cell (4 × 8 bits) leaves them sorted
-// by (cell, face) as std::sort would, in a fraction of its time. Each pass counts digits by
-// blocks in parallel, and each block scatters its entries after those of every earlier block
-// with the same digit: the order of the sequential sort for any thread count.
+// by (cell, face) as std::sort would, in a fraction of its time, for any thread count.
 void TriangleGrid::sort_by_cell(std::vector<std::uint64_t>& entries, const Execution& exec) {
-    const std::size_t n = entries.size();
-    std::vector<std::uint64_t> buffer(n);
-    std::vector<std::array<std::size_t, 256>> next(block_count(n, kCheapBlock)); // per block
-    for (int shift = 32; shift < 64; shift += 8) {
-        const auto digit = [shift](std::uint64_t e) { return std::size_t(e >> shift) & 0xff; };
-        parallel_for_blocks(exec, n, kCheapBlock,
-                            [&](std::size_t b, std::size_t first, std::size_t end) {
-                                next[b].fill(0);
-                                for (std::size_t i = first; i < end; ++i)
-                                    ++next[b][digit(entries[i])];
-                            });
-        std::size_t slot = 0;
-        for (std::size_t d = 0; d < 256; ++d)
-            for (std::array<std::size_t, 256>& count : next) slot += std::exchange(count[d], slot);
-        parallel_for_blocks(exec, n, kCheapBlock,
-                            [&](std::size_t b, std::size_t first, std::size_t end) {
-                                for (std::size_t i = first; i < end; ++i)
-                                    buffer[next[b][digit(entries[i])]++] = entries[i];
-                            });
-        entries.swap(buffer);
-    }
+    std::vector<std::uint64_t> buffer;
+    for (int shift = 32; shift < 64; shift += 8)
+        stable_radix_pass(
+            entries, buffer, [shift](std::uint64_t e) { return std::size_t(e >> shift) & 0xff; },
+            exec);
 }
 
 } // namespace hrsr

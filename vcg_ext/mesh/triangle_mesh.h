@@ -1,6 +1,8 @@
 // An indexed triangle mesh (no positions: vertices are referred to by index).
 #pragma once
 
+#include "parallel.h"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -19,5 +21,8 @@ struct VertexCorners {
 };
 
 VertexCorners corners_by_vertex(std::size_t vertex_count, const std::vector<Triangle>& triangles);
+/// The same lists, built by one task per thread, each over its own range of vertices.
+VertexCorners corners_by_vertex(std::size_t vertex_count, const std::vector<Triangle>& triangles,
+                                const Execution& exec);
 
 } // namespace hrsr
