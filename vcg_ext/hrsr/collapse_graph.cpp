@@ -65,11 +65,18 @@ CollapseGraph build_graph(const std::vector<Vec3>& positions, const std::vector<
         table = knn_table(index, k, exec);
     }
     const CsrGraph union_graph = symmetric_union(std::move(table), n, exec);
-    for (std::uint32_t i = 0; i < n; ++i) {
-        g.neighbours[i].reserve(std::size_t(union_graph.end(i) - union_graph.begin(i)));
-        for (const std::uint32_t* j = union_graph.begin(i); j != union_graph.end(i); ++j)
-            if (g.n[i].dot(g.n[*j]) >= 0) g.neighbours[i].push_back(*j); // D-14: > 90° never linked
-    }
+    // Each node's list is its own (by blocks of nodes in parallel).
+    parallel_for_blocks(
+        {exec.threads, nullptr}, n, kCheapBlock,
+        [&](std::size_t, std::size_t first, std::size_t end) {
+            for (auto i = std::uint32_t(first); i < end; ++i) {
+                auto& list = g.neighbours[i];
+                list.reserve(std::size_t(union_graph.end(i) - union_graph.begin(i)));
+                for (const std::uint32_t* j = union_graph.begin(i); j != union_graph.end(i); ++j)
+                    if (g.n[i].dot(g.n[*j]) >= 0) // D-14: > 90° never linked
+                        list.push_back(*j);
+            }
+        });
     return g;
 }
 
