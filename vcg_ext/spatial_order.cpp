@@ -3,7 +3,6 @@
 #include "radix_pass.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>

@@ -391,15 +391,15 @@ private:
         }
         // Per slot: the piece's vertices with a standing face, less two per border start.
         std::vector<std::vector<std::int64_t>> used(block_count(n, kCheapBlock));
-        parallel_for_blocks(
-            exec_, n, kCheapBlock, [&](std::size_t b, std::size_t first, std::size_t end) {
-                used[b].assign(std::size_t(slots), 0);
-                for (auto v = std::uint32_t(first); v < end; ++v) {
-                    const std::int32_t slot = slot_of_root[pieces.find(v)];
-                    if (slot != kNotAsked && any_face(v, [](const Triangle&) { return true; }))
-                        ++used[b][std::size_t(slot)];
-                }
-            });
+        parallel_for_blocks(exec_, n, kCheapBlock,
+                            [&](std::size_t b, std::size_t first, std::size_t end) {
+                                used[b].assign(std::size_t(slots), 0);
+                                for (auto v = std::uint32_t(first); v < end; ++v) {
+                                    const std::int32_t slot = slot_of_root[pieces.find(v)];
+                                    if (slot != kNotAsked && has_standing_face(v))
+                                        ++used[b][std::size_t(slot)];
+                                }
+                            });
         std::vector<std::int64_t> interior_minus_border(std::size_t(slots), 0);
         for (const std::vector<std::int64_t>& block : used)
             for (std::size_t s = 0; s < block.size(); ++s) interior_minus_border[s] += block[s];
@@ -862,7 +862,7 @@ private:
     }
 
     bool never_had_a_face(std::uint32_t v) const {
-        return at_.begin(v) == at_.end(v) && !any_face(v, [](const Triangle&) { return true; });
+        return at_.begin(v) == at_.end(v) && !has_standing_face(v);
     }
 
     // v had faces and has none now (the original ones are looked at first: no map lookup for
@@ -871,7 +871,7 @@ private:
         if (at_.begin(v) == at_.end(v)) return false;
         for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
             if (alive_[at_.corner[e] / 3]) return false;
-        return !any_face(v, [](const Triangle&) { return true; });
+        return !has_standing_face(v);
     }
 
     struct Split {
@@ -1214,6 +1214,10 @@ private:
         if (it == added_at_.end()) return false;
         return std::any_of(it->second.begin(), it->second.end(),
                            [&](std::uint32_t f) { return alive_[f] && test(triangles_[f]); });
+    }
+
+    bool has_standing_face(std::uint32_t v) const {
+        return any_face(v, [](const Triangle&) { return true; });
     }
 
     // Whether a and b are the same triangle of positions.
