@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace hrsr {
@@ -89,6 +90,28 @@ TEST(CornersByVertex, RangesOfVerticesGiveTheSequentialLists) {
     for (std::uint32_t v = 0; v < n; ++v)
         for (std::uint32_t e = sequential.begin(v); e < sequential.end(v); ++e)
             ASSERT_EQ(triangles[sequential.corner[e] / 3][sequential.corner[e] % 3], v);
+}
+
+// D-46: faces ordered by their smallest vertex, stably (faces sharing it keep their order), the
+// same order for any thread count; each face keeps its corners as they were.
+TEST(SortBySmallestVertex, StableAndTheSameForAnyThreadCount) {
+    std::mt19937 random(11);
+    // Vertex ids over all four bytes, with many faces sharing a smallest vertex.
+    std::uniform_int_distribution<std::uint32_t> vertex(0, 0xfffffff0u), small(0, 999);
+    std::vector<Triangle> triangles(200000); // several blocks of the parallel passes
+    for (std::uint32_t k = 0; k < triangles.size(); ++k)
+        triangles[k] = k % 2 ? Triangle{vertex(random), vertex(random), vertex(random)}
+                             : Triangle{vertex(random), small(random), vertex(random)};
+    auto smallest = [](const Triangle& t) { return std::min({t[0], t[1], t[2]}); };
+    std::vector<Triangle> expected = triangles;
+    std::stable_sort(expected.begin(), expected.end(), [&](const Triangle& a, const Triangle& b) {
+        return smallest(a) < smallest(b);
+    });
+    for (int threads : {1, 2, 8}) {
+        std::vector<Triangle> sorted = triangles;
+        sort_by_smallest_vertex(sorted, Execution{threads});
+        EXPECT_EQ(sorted, expected) << threads << " threads";
+    }
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 namespace hrsr {
@@ -130,6 +131,29 @@ INSTANTIATE_TEST_SUITE_P(AnalyticGenus3, HrsrSurface,
                                                                    3}),
                                             ::testing::Values(0.25, 0.125)),
                          surface_case_name);
+
+// D-46: the re-expansion hands its mesh on in spatial order, its vertices by node (the points'
+// spatial order, D-40) and its faces by their smallest vertex, so that the whole-mesh passes after
+// it walk memory in order.
+class FinishedMesh : public ReexpansionObserver {
+public:
+    void finished(const ReexpandedMesh& mesh) override { kept = mesh; }
+    ReexpandedMesh kept;
+};
+
+TEST(Hrsr, ReexpandedMeshComesInSpatialOrder) {
+    const PointSet s = testing::sample_torus(30000);
+    ReconstructionReport report;
+    FinishedMesh watcher;
+    reconstruct_hrsr(s, {}, {}, report, nullptr, &watcher);
+    const ReexpandedMesh& m = watcher.kept;
+    ASSERT_GT(m.triangles.size(), 50000u);
+    EXPECT_TRUE(std::is_sorted(m.vertex_node.begin(), m.vertex_node.end()));
+    EXPECT_TRUE(std::is_sorted(
+        m.triangles.begin(), m.triangles.end(), [](const Triangle& a, const Triangle& b) {
+            return std::min({a[0], a[1], a[2]}) < std::min({b[0], b[1], b[2]});
+        }));
+}
 
 TEST(Hrsr, WithoutLMinEveryPointIsAVertexAtItsInputPosition) {
     const PointSet s = testing::sample_torus(15000, 1.0, 0.35, testing::Density::Graded);

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace hrsr {
 
@@ -182,19 +183,31 @@ public:
                 mesh_.move(v.value(), points_[vertex_node_[v].value()]);
     }
 
-    /// The mesh, its vertices renumbered without the slots of records that made none (in slot
-    /// order: the numbering of a sequential replay).
-    ReexpandedMesh take_result() {
+    /// The mesh, its vertices renumbered without the slots of records that made none, in node
+    /// order (D-46: the spatial order of D-40; a node's copies in slot order), and its faces by
+    /// their smallest vertex, so that every whole-mesh pass after it walks memory in that order.
+    /// Its loops report no progress (the phase's fraction is complete).
+    ReexpandedMesh take_result(const Execution& exec) {
+        const Execution quiet{exec.threads, nullptr};
+        std::vector<std::uint32_t> first_of_node(points_.size() + 1, 0);
+        for (PointIndex node : vertex_node_)
+            if (node != ReexpandedMesh::kNoNode) ++first_of_node[node.value() + 1];
+        std::partial_sum(first_of_node.begin(), first_of_node.end(), first_of_node.begin());
         std::vector<std::uint32_t> renumber(vertex_node_.size(), ~0u);
-        IndexVector<VertexIndex, PointIndex> vertex_node;
-        for (VertexIndex v : vertex_node_.keys())
-            if (vertex_node_[v] != ReexpandedMesh::kNoNode) {
-                renumber[v.value()] = std::uint32_t(vertex_node.size());
-                vertex_node.push_back(vertex_node_[v]);
-            }
+        IndexVector<VertexIndex, PointIndex> vertex_node(first_of_node.back(), PointIndex(0));
+        for (VertexIndex v : vertex_node_.keys()) {
+            const PointIndex node = vertex_node_[v];
+            if (node == ReexpandedMesh::kNoNode) continue;
+            renumber[v.value()] = first_of_node[node.value()]++;
+            vertex_node[VertexIndex(renumber[v.value()])] = node;
+        }
         std::vector<Triangle> triangles = mesh_.triangles();
-        for (Triangle& t : triangles)
-            for (std::uint32_t& v : t) v = renumber[v];
+        parallel_for_blocks(quiet, triangles.size(), kCheapBlock,
+                            [&](std::size_t, std::size_t first, std::size_t end) {
+                                for (std::size_t t = first; t < end; ++t)
+                                    for (std::uint32_t& v : triangles[t]) v = renumber[v];
+                            });
+        sort_by_smallest_vertex(triangles, quiet);
         std::vector<std::array<std::uint32_t, 2>> border = mesh_.border_edges();
         for (auto& e : border)
             for (std::uint32_t& v : e) v = renumber[v];
@@ -438,7 +451,9 @@ ReexpandedMesh replay_collapses(ReexpansionInput input, const Execution& exec,
     }
     replayer.snap_to_input();
     std::vector<CollapseRecord>().swap(input.records); // spent: free them before the export
-    return replayer.take_result();
+    ReexpandedMesh result = replayer.take_result(exec);
+    if (observer) observer->finished(result);
+    return result;
 }
 
 } // namespace hrsr

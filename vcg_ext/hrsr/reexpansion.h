@@ -35,6 +35,8 @@ public:
     virtual void split_done(const SplitMesh& /*mesh*/, std::uint32_t /*c*/, std::uint32_t /*c2*/,
                             const Vec3& /*x_a*/, const Vec3& /*x_b*/, std::size_t /*removed*/,
                             bool /*unresolved*/) {}
+    /// The mesh as the re-expansion hands it on (D-46: in node order).
+    virtual void finished(const ReexpandedMesh& /*mesh*/) {}
 };
 
 /// The mesh RsR built on the coarse cloud, where the re-expansion starts.

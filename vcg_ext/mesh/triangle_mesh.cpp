@@ -1,5 +1,8 @@
 #include "mesh/triangle_mesh.h"
 
+#include "radix_pass.h"
+
+#include <algorithm>
 #include <numeric>
 
 namespace hrsr {
@@ -60,6 +63,18 @@ VertexCorners corners_by_vertex(std::size_t n, const std::vector<Triangle>& tria
         },
         1);
     return c;
+}
+
+// A stable radix sort on the smallest vertex, a byte at a time.
+void sort_by_smallest_vertex(std::vector<Triangle>& triangles, const Execution& exec) {
+    std::vector<Triangle> buffer;
+    for (int shift = 0; shift < 32; shift += 8)
+        stable_radix_pass(
+            triangles, buffer,
+            [shift](const Triangle& t) {
+                return std::size_t(std::min({t[0], t[1], t[2]}) >> shift) & 0xff;
+            },
+            exec);
 }
 
 } // namespace hrsr

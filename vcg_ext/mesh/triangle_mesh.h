@@ -25,4 +25,8 @@ VertexCorners corners_by_vertex(std::size_t vertex_count, const std::vector<Tria
 VertexCorners corners_by_vertex(std::size_t vertex_count, const std::vector<Triangle>& triangles,
                                 const Execution& exec);
 
+/// Orders faces by their smallest vertex, stably (faces sharing it keep their order), for any
+/// thread count: on vertices in spatial order the faces follow it too.
+void sort_by_smallest_vertex(std::vector<Triangle>& triangles, const Execution& exec);
+
 } // namespace hrsr
