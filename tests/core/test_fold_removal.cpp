@@ -96,7 +96,7 @@ TEST(FoldRemoval, AFoldAtABoundary) {
     expect_clean(m, r, 4);
 }
 
-// Two faces on one place (STATUS gap 19) are a pair: the fold goes, and no point with it.
+// Two faces on one place (ALGORITHM.md D-32) are a pair: the fold goes, and no point with it.
 TEST(FoldRemoval, AFinThroughACopyGoes) {
     const TestMesh m = testing::fin_through_a_copy();
     ASSERT_EQ(self_intersecting_pairs(m.positions, m.triangles, {}).size(), 1u);

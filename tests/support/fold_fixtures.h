@@ -60,7 +60,7 @@ inline TestMesh boundary_fold() {
 
 /// A bent patch with a fin: a face folded back onto a border face across its border edge, its
 /// third corner a copy of that face's (two faces on one place, as a pinched point's copies can
-/// leave them; STATUS gap 19).
+/// leave them; ALGORITHM.md D-32).
 inline TestMesh fin_through_a_copy() {
     TestMesh m = height_patch(4, [](double x, double) { return 0.2 * x * x; });
     const Triangle border_face = m.triangles[8]; // (1, 0), (2, 0), (2, 1): first edge on y = 0

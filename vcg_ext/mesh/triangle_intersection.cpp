@@ -150,7 +150,7 @@ bool mesh_triangles_intersect(const Corners& a, const Triangle& ia, const Corner
     }
     if (shared == 0) return triangles_meet(a, b);
     if (shared == 1) return meet_beyond_shared_corner(a, ka, b, kb);
-    if (shared == 3) return true; // a duplicate face (STATUS gap 19: a fin through a copy)
+    if (shared == 3) return true; // a duplicate face (D-32: a fin through a copy)
     for (int j = 0; j < 3; ++j)
         if (ib[j] != ia[0] && ib[j] != ia[1] && ib[j] != ia[2]) unshared_b = j;
     return overlap_across_shared_edge(a, unshared_a, b[unshared_b]);
