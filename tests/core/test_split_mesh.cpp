@@ -89,6 +89,21 @@ TEST(SplitMesh, StarIsCounterClockwiseFromTheSmallestNeighbour) {
     EXPECT_EQ(rim.wedges[1], nullptr);
 }
 
+// A border vertex's star runs from the face after its gap, wherever the walk around it starts:
+// the hexagon's centre with each of its six triangles taken out in turn.
+TEST(SplitMesh, StarOfABorderVertexWhereverItsGapLies) {
+    for (std::size_t gap = 0; gap < 6; ++gap) {
+        Fixture h = hexagon();
+        h.triangles.erase(h.triangles.begin() + std::ptrdiff_t(gap));
+        const SplitMesh m(h.positions, h.triangles, 16, 16);
+        const Star s = m.star(0);
+        EXPECT_TRUE(s.boundary) << gap;
+        EXPECT_EQ(s.neighbours, (std::vector<std::uint32_t>{1, 2, 3, 4, 5, 6})) << gap;
+        for (std::size_t w = 0; w < 6; ++w)
+            EXPECT_EQ(s.wedges[w] == nullptr, w == gap) << gap << " " << w;
+    }
+}
+
 TEST(SplitMesh, InteriorSplitsPreserveEulerCharacteristic) {
     split_every_pair(octahedron(), 4);
 }
