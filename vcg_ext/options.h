@@ -183,9 +183,10 @@ inline constexpr double kDihedralGuard = 1.75;
 /// sampling is anisotropic (the rocker arm's flat faces reach 1.5 times the bound and were opened
 /// at 1.5), while the ears over real holes are longer still (the shark's: up to 3.4 times).
 inline constexpr double kOverlongFactor = 2.0;
-/// HRsR never collapses below min(N, this) points (D-24): RsR needs points to triangulate, and
-/// 12.5 % of a tiny cloud is a single point (3 points gave an empty mesh).
-inline constexpr std::size_t kMinCoarsePoints = 200;
+/// HRsR never collapses below min(N, this) points (D-24, D-47): RsR needs points to triangulate
+/// (12.5 % of a tiny cloud is a single point), and on 200–350 coarse points it opened holes the
+/// data does not have (the half tunnel) and lost a handle (the sparse 5k triple torus).
+inline constexpr std::size_t kMinCoarsePoints = 500;
 /// D-42: the collapse works in tiles of about this many consecutive points of the spatial order
 /// (D-40), in parallel; a cloud of at most this many points is one tile.
 inline constexpr std::size_t kCollapseTilePoints = 65536;

@@ -484,7 +484,7 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
     CollapsedCloud collapsed;
     {
         Timer timer(report.timings, "collapse");
-        // D-24: never below min(N, 200) points, so tiny clouds still leave RsR something.
+        // D-24, D-47: never below min(N, 500) points, so small clouds still leave RsR enough.
         CollapseOptions collapse_options = options.collapse;
         const double floor =
             double(std::min(cloud.size(), constants::kMinCoarsePoints)) / double(cloud.size());

@@ -263,7 +263,8 @@ TEST(Hrsr, NoisyCloudGivesTheSameMeshForAnyThreadCount) {
 }
 
 // D-24 and the no-empty-mesh rule: a tiny cloud still gives a mesh (it is not collapsed to one
-// point), and a cloud no triangle can be built from is an error, never an empty mesh.
+// point), and a cloud no triangle can be built from is an error, never an empty mesh. D-47: a
+// small cloud keeps 500 coarse points whatever p says.
 TEST(Hrsr, TinyCloudsGiveAMeshOrAClearError) {
     // Flat patches of 4, 9 and 49 points, and small spheres (on tinier spheres the neighbours'
     // normals differ by more than θ and the cloud is rejected with a message, which is fine).
@@ -275,9 +276,16 @@ TEST(Hrsr, TinyCloudsGiveAMeshOrAClearError) {
         const std::size_t n = s.size();
         ReconstructionReport report;
         const Reconstruction r = reconstruct_hrsr(s, hrsr_options(0.125), {}, report);
-        EXPECT_EQ(report.coarse_points, n) << n; // below 200 points nothing is collapsed
+        EXPECT_EQ(report.coarse_points, n) << n; // below 500 points nothing is collapsed
         EXPECT_FALSE(r.triangles.empty()) << n;
         EXPECT_EQ(report.mesh.non_manifold_edges, 0u);
+    }
+    {
+        const PointSet s =
+            testing::sample_sphere(1000, 1.0, Vec3(0, 0, 0), testing::Density::Uniform, 7);
+        ReconstructionReport report;
+        reconstruct_hrsr(s, hrsr_options(0.125), {}, report);
+        EXPECT_EQ(report.coarse_points, 500u);
     }
     PointSet line;
     for (int i = 0; i < 3; ++i) {

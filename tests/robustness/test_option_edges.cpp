@@ -89,17 +89,17 @@ TEST(OptionEdges, NegativeOrNonFiniteLMinIsRejected) {
 // l_min longer than the diagonal: no split is replayed; the coarse mesh, snapped to input
 // points, is the result (the coarsest level of detail), still closed.
 TEST(OptionEdges, LMinLongerThanTheDiagonalGivesTheCoarseMesh) {
-    const PointSet s = testing::sample_sphere(3000);
+    const PointSet s = testing::sample_sphere(6000);
     ReconstructionOptions o;
     o.reexpand.l_min = 100.0; // the diagonal is about 3.5
     const Attempt a = attempt(s, Method::Hrsr, o);
     expect_closed(a, s, 0, a.report.coarse_points, "hrsr");
-    EXPECT_EQ(a.report.coarse_points, 375u); // 12.5 %
+    EXPECT_EQ(a.report.coarse_points, 750u); // 12.5 %
     EXPECT_TRUE(a.report.reexpansion.stopped_at_l_min);
     EXPECT_EQ(a.report.reexpansion.replayed, 0u);
     o.l_min_percent = 100.0;
     o.reexpand.l_min = 0;
-    expect_closed(attempt(s, Method::Hrsr, o), s, 0, 375u, "hrsr, 100%");
+    expect_closed(attempt(s, Method::Hrsr, o), s, 0, 750u, "hrsr, 100%");
 }
 
 TEST(OptionEdges, HandlesBelowMinusOneIsRejected) {

@@ -84,7 +84,10 @@ TEST(SurfaceCases, TwoSheetsCloserThanTheSpacing) {
 // vertex copy per sheet) and keeps nearly every point. Where triangles of one plane cross the
 // other, D-32 takes points out: with RsR only near the line where the planes cross; with HRsR
 // (r_v 98.97 % in session 13) also two points 4.5 and 10.5 spacings from it. No intersecting
-// pair is left.
+// pair is left. RsR keeps the planes apart (two pieces of genus 0); HRsR's coarse RsR joins
+// them across the line with handles (docs/STATUS.md, surfaces that touch): at every p from 1/8
+// to 0.7 one main piece of genus 1–4 (session 31; at 400 coarse points, before D-47, genus 3
+// and three scraps, which is what a count of at least two pieces had passed on).
 TEST(SurfaceCases, CrossingPlanes) {
     PointSet s = testing::sample_plane(40), other = testing::sample_plane(40, 1.0, 9);
     for (std::size_t i = 0; i < other.size(); ++i) {
@@ -98,12 +101,14 @@ TEST(SurfaceCases, CrossingPlanes) {
         expect_valid_mesh(a, s, name(m));
         expect_no_fold_left(a, s, name(m));
         EXPECT_GT(a.report.vertex_reference_ratio, m == Method::Rsr ? 0.99 : 0.98) << name(m);
-        EXPECT_GE(a.report.mesh.components.size(), 2u) << name(m);
-        if (m == Method::Rsr)
+        if (m == Method::Rsr) {
+            ASSERT_EQ(a.report.mesh.components.size(), 2u);
+            for (const ComponentTopology& c : a.report.mesh.components) EXPECT_EQ(c.genus(), 0);
             for (std::uint32_t i : a.report.dropped_fold) {
                 const Vec3& p = s.positions[i];
                 EXPECT_LT(std::max(std::abs(p[1] - 19.5), std::abs(p[2])), 2.5) << i;
             }
+        }
     }
 }
 
