@@ -104,12 +104,46 @@ struct NewTriangles {
     }
 };
 
-// Everything a pair's score reads that does not depend on the pair: built once per split.
+// A fan's wedges from spoke `from` counter-clockwise up to spoke `to` (not included), for every
+// such range at once: the sum of their min-angle terms and of the joints between consecutive
+// wedges of the range, and the worst of those joints. A gap (a wedge that is no face) adds no
+// term, and its joints were never made (Fan::joint), so no adjacency is scored across it.
+struct FanRanges {
+    std::size_t d = 0;
+    std::vector<double> energy, worst; ///< [from · d + to]
+
+    void assign(const Fan& fan, const std::vector<SFace*>& wedges) {
+        d = wedges.size();
+        energy.assign(d * d, 0);
+        worst.assign(d * d, 0);
+        for (std::size_t from = 0; from < d; ++from) {
+            double e = 0, m = 0;
+            for (std::size_t length = 1; length < d; ++length) {
+                const std::size_t w = (from + length - 1) % d;
+                if (wedges[w]) e += fan.angle[w];
+                if (length > 1) { // the joint with the wedge before, inside the range
+                    e += fan.joint[w].energy;
+                    m = std::max(m, fan.joint[w].dihedral);
+                }
+                energy[from * d + (w + 1) % d] = e;
+                worst[from * d + (w + 1) % d] = m;
+            }
+        }
+    }
+};
+
+// Everything a pair's score reads that does not depend on the pair: built once per split, so
+// that a pair costs a few look-ups (D-19: the d(d − 1) pairs each walked all d wedges before).
 struct SplitTerms {
     const std::vector<SFace*>* wedges = nullptr; ///< the star's: null where a wedge is no face
     Fan new_fan, old_fan;                        ///< wedges around p_new and around p_old
     NewTriangles spokes;
     double new_edge = 0; ///< |p_new − p_old| (at least 1e-8): the edge the new triangles share
+    FanRanges new_ranges, old_ranges;
+    // The joints at the ends of each side's chain, between a new triangle and the first or last
+    // wedge of the side (absent where that wedge is no face): per spoke, not per pair.
+    std::vector<Joint> new_first, new_last, old_first, old_last;
+    std::vector<std::uint8_t> new_first_at, new_last_at, old_first_at, old_last_at;
 
     // Refills the terms (their storage is reused: one per thread).
     void assign(const Vec3& p_old, const Vec3& p_new, const std::vector<Vec3>& q,
@@ -119,11 +153,35 @@ struct SplitTerms {
         old_fan.assign(p_old, q, star_wedges);
         spokes.assign(p_old, p_new, q);
         new_edge = std::max((p_new - p_old).Norm(), 1e-8);
+        new_ranges.assign(new_fan, star_wedges);
+        old_ranges.assign(old_fan, star_wedges);
+        const std::size_t d = q.size();
+        for (auto* joints : {&new_first, &new_last, &old_first, &old_last}) joints->assign(d, {});
+        for (auto* at : {&new_first_at, &new_last_at, &old_first_at, &old_last_at})
+            at->assign(d, 0);
+        for (std::size_t k = 0; k < d; ++k) {
+            const std::size_t before = (k + d - 1) % d;
+            if (star_wedges[k]) { // wedge k starts a side at spoke k
+                new_first[k] =
+                    Joint(spokes.out_normal[k], new_fan.normal[k], new_fan.spoke_length[k]);
+                old_first[k] =
+                    Joint(spokes.in_normal[k], old_fan.normal[k], old_fan.spoke_length[k]);
+                new_first_at[k] = old_first_at[k] = 1;
+            }
+            if (star_wedges[before]) { // wedge k − 1 ends a side at spoke k
+                new_last[k] =
+                    Joint(new_fan.normal[before], spokes.in_normal[k], new_fan.spoke_length[k]);
+                old_last[k] =
+                    Joint(old_fan.normal[before], spokes.out_normal[k], old_fan.spoke_length[k]);
+                new_last_at[k] = old_last_at[k] = 1;
+            }
+        }
     }
 
     // Chains of triangles around the two split vertices; consecutive ones share a spoke. h_in
-    // comes from spoke i, h_out goes to spoke j. A border split (D-34) leaves out one of the new
-    // triangles, and its terms.
+    // comes from spoke i, h_out goes to spoke j: the new vertex keeps the wedges from j to i, c
+    // those from i to j. A border split (D-34) leaves out one of the new triangles, and its
+    // terms.
     Score score(std::size_t i, std::size_t j,
                 SplitMesh::BorderSplit omit = SplitMesh::BorderSplit::None) const {
         const std::size_t d = wedges->size();
@@ -134,33 +192,17 @@ struct SplitTerms {
             s.energy += joint.energy;
             s.worst_dihedral = std::max(s.worst_dihedral, joint.dihedral);
         };
-        const Vec3* n_out = with_out ? &spokes.out_normal[j] : nullptr;
-        const Vec3* n_in = with_in ? &spokes.in_normal[i] : nullptr;
-        if (n_out) s.energy += spokes.out_angle[j];
-        if (n_in) s.energy += spokes.in_angle[i];
-        if (n_in && n_out) add(Joint(*n_in, *n_out, new_edge)); // D-18: the true shared edge
-        // side(from, to): the wedges from spoke `from` counter-clockwise to spoke `to`, between
-        // the new triangles with normals `first` (at `from`) and `last` (at `to`), where present.
-        auto side = [&](const Fan& fan, std::size_t from, std::size_t to, const Vec3* first,
-                        const Vec3* last) {
-            bool have_previous = true;
-            for (std::size_t w = from; w != to; w = (w + 1) % d) {
-                if (!(*wedges)[w]) { // the boundary gap: no face, no adjacency across it (D-18)
-                    have_previous = false;
-                    continue;
-                }
-                s.energy += fan.angle[w];
-                if (w != from && have_previous)
-                    add(fan.joint[w]);
-                else if (w == from && first)
-                    add(Joint(*first, fan.normal[w], fan.spoke_length[w]));
-                if ((w + 1) % d == to && last)
-                    add(Joint(fan.normal[w], *last, fan.spoke_length[to]));
-                have_previous = true;
-            }
-        };
-        side(new_fan, j, i, n_out, n_in); // new side: b → a
-        side(old_fan, i, j, n_in, n_out); // old side: a → b
+        if (with_out) s.energy += spokes.out_angle[j];
+        if (with_in) s.energy += spokes.in_angle[i];
+        if (with_in && with_out) // D-18: the true shared edge
+            add(Joint(spokes.in_normal[i], spokes.out_normal[j], new_edge));
+        s.energy += new_ranges.energy[j * d + i] + old_ranges.energy[i * d + j];
+        s.worst_dihedral =
+            std::max({s.worst_dihedral, new_ranges.worst[j * d + i], old_ranges.worst[i * d + j]});
+        if (with_out && new_first_at[j]) add(new_first[j]);
+        if (with_in && new_last_at[i]) add(new_last[i]);
+        if (with_in && old_first_at[i]) add(old_first[i]);
+        if (with_out && old_last_at[j]) add(old_last[j]);
         return s;
     }
 };
