@@ -141,9 +141,9 @@ struct SplitTerms {
     double new_edge = 0; ///< |p_new − p_old| (at least 1e-8): the edge the new triangles share
     FanRanges new_ranges, old_ranges;
     // The joints at the ends of each side's chain, between a new triangle and the first or last
-    // wedge of the side (absent where that wedge is no face): per spoke, not per pair.
+    // wedge of the side: per spoke, not per pair. Where that wedge is no face the joint is left
+    // at zero energy and zero dihedral, which adds nothing to a score.
     std::vector<Joint> new_first, new_last, old_first, old_last;
-    std::vector<std::uint8_t> new_first_at, new_last_at, old_first_at, old_last_at;
 
     // Refills the terms (their storage is reused: one per thread).
     void assign(const Vec3& p_old, const Vec3& p_new, const std::vector<Vec3>& q,
@@ -157,8 +157,6 @@ struct SplitTerms {
         old_ranges.assign(old_fan, star_wedges);
         const std::size_t d = q.size();
         for (auto* joints : {&new_first, &new_last, &old_first, &old_last}) joints->assign(d, {});
-        for (auto* at : {&new_first_at, &new_last_at, &old_first_at, &old_last_at})
-            at->assign(d, 0);
         for (std::size_t k = 0; k < d; ++k) {
             const std::size_t before = (k + d - 1) % d;
             if (star_wedges[k]) { // wedge k starts a side at spoke k
@@ -166,14 +164,12 @@ struct SplitTerms {
                     Joint(spokes.out_normal[k], new_fan.normal[k], new_fan.spoke_length[k]);
                 old_first[k] =
                     Joint(spokes.in_normal[k], old_fan.normal[k], old_fan.spoke_length[k]);
-                new_first_at[k] = old_first_at[k] = 1;
             }
             if (star_wedges[before]) { // wedge k − 1 ends a side at spoke k
                 new_last[k] =
                     Joint(new_fan.normal[before], spokes.in_normal[k], new_fan.spoke_length[k]);
                 old_last[k] =
                     Joint(old_fan.normal[before], spokes.out_normal[k], old_fan.spoke_length[k]);
-                new_last_at[k] = old_last_at[k] = 1;
             }
         }
     }
@@ -199,10 +195,10 @@ struct SplitTerms {
         s.energy += new_ranges.energy[j * d + i] + old_ranges.energy[i * d + j];
         s.worst_dihedral =
             std::max({s.worst_dihedral, new_ranges.worst[j * d + i], old_ranges.worst[i * d + j]});
-        if (with_out && new_first_at[j]) add(new_first[j]);
-        if (with_in && new_last_at[i]) add(new_last[i]);
-        if (with_in && old_first_at[i]) add(old_first[i]);
-        if (with_out && old_last_at[j]) add(old_last[j]);
+        if (with_out) add(new_first[j]);
+        if (with_in) add(new_last[i]);
+        if (with_in) add(old_first[i]);
+        if (with_out) add(old_last[j]);
         return s;
     }
 };
