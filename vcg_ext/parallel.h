@@ -16,6 +16,12 @@ struct Execution {
     Progress* progress = nullptr;
 };
 
+/// The same threads, reporting no progress: for the inner loops of a phase that reports its own
+/// fraction, or of one that reports none.
+inline Execution without_progress(const Execution& exec) {
+    return {exec.threads, nullptr};
+}
+
 /// Calls body(i) for every i in [0, n), in parallel. Progress is reported from the calling
 /// thread only. An exception thrown by `body` or by the progress callback (including
 /// Cancelled) stops the loop promptly and is rethrown here, on the calling thread. Indices are

@@ -447,7 +447,7 @@ Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const E
     std::optional<Timer> assembly(std::in_place, report.timings, "assembly");
     // D-46: the faces by their smallest vertex (the points are in spatial order), so that the
     // whole-mesh passes below walk memory in that order.
-    sort_by_smallest_vertex(rsr_mesh.triangles, Execution{exec.threads, nullptr});
+    sort_by_smallest_vertex(rsr_mesh.triangles, without_progress(exec));
     report.small_holes_filled = fill_small_holes(rsr_mesh.triangles, cloud.positions, {},
                                                  kMaxFilledLoop, SmallHoleScope::Every, exec);
     CompactMesh<PointIndex> m =

@@ -67,7 +67,7 @@ CollapseGraph build_graph(const std::vector<Vec3>& positions, const std::vector<
     const CsrGraph union_graph = symmetric_union(std::move(table), n, exec);
     // Each node's list is its own (by blocks of nodes in parallel).
     parallel_for_blocks(
-        {exec.threads, nullptr}, n, kCheapBlock,
+        without_progress(exec), n, kCheapBlock,
         [&](std::size_t, std::size_t first, std::size_t end) {
             for (auto i = std::uint32_t(first); i < end; ++i) {
                 auto& list = g.neighbours[i];

@@ -188,7 +188,7 @@ public:
     /// their smallest vertex, so that every whole-mesh pass after it walks memory in that order.
     /// Its loops report no progress (the phase's fraction is complete).
     ReexpandedMesh take_result(const Execution& exec) {
-        const Execution quiet{exec.threads, nullptr};
+        const Execution quiet = without_progress(exec);
         std::vector<std::uint32_t> first_of_node(points_.size() + 1, 0);
         for (PointIndex node : vertex_node_)
             if (node != ReexpandedMesh::kNoNode) ++first_of_node[node.value() + 1];

@@ -243,7 +243,7 @@ std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
                                        int rank, const Execution& exec) {
     const std::size_t vertices = vertex_point.size();
     // No progress from the mesh loops (cheap; the reach test reports the phase's fraction).
-    const Execution quiet{exec.threads, nullptr};
+    const Execution quiet = without_progress(exec);
     const EdgeTriangles edges(triangles, vertices, quiet);
     const std::vector<Screened> queried = screened(edges, points, vertex_point, quiet);
     if (queried.empty() || rank < 1) return 0;

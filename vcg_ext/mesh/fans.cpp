@@ -49,14 +49,14 @@ private:
 } // namespace
 
 Fans compute_fans(std::size_t n, const std::vector<Triangle>& triangles, const Execution& exec) {
-    const VertexCorners at = corners_by_vertex(n, triangles, {exec.threads, nullptr});
+    const VertexCorners at = corners_by_vertex(n, triangles, without_progress(exec));
     Fans fans;
     fans.corner_fan.assign(3 * triangles.size(), 0);
     fans.fan_count.assign(n, 0);
     // Blocks of vertices: each writes only its vertices' counts and corners.
     constexpr std::size_t kBlock = 4096;
     parallel_for_blocks(
-        {exec.threads, nullptr}, n, kBlock, [&](std::size_t, std::size_t first, std::size_t end) {
+        without_progress(exec), n, kBlock, [&](std::size_t, std::size_t first, std::size_t end) {
             FanNumbering numbering(triangles, fans);
             for (std::uint32_t v = std::uint32_t(first); v < end; ++v)
                 if (at.end(v) > at.begin(v))

@@ -39,7 +39,7 @@ void count_by_component(const std::vector<std::uint32_t>& component,
 
 MeshStats measure_mesh(std::size_t n, const std::vector<Triangle>& triangles,
                        std::vector<std::uint32_t>* triangle_component, const Execution& exec) {
-    const Execution quiet{exec.threads, nullptr};
+    const Execution quiet = without_progress(exec);
     MeshStats s;
     s.faces = triangles.size();
     for (const Triangle& t : triangles)

@@ -328,7 +328,7 @@ std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector
                              const IndexVector<VertexIndex, PointIndex>& vertex_point,
                              std::size_t max_edges, SmallHoleScope scope, const Execution& exec) {
     // No progress from these loops: the phase's fraction is not theirs to report.
-    const Execution quiet{exec.threads, nullptr};
+    const Execution quiet = without_progress(exec);
     const VertexPositions positions{points, vertex_point,
                                     vertex_point.empty() ? points.size() : vertex_point.size()};
     std::vector<Fill> fills;

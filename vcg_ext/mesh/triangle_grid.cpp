@@ -10,7 +10,7 @@ namespace hrsr {
 TriangleGrid::TriangleGrid(const TriangleGeometry& g, const Execution& exec) {
     // The loops report no progress (the search below reports the fraction); the calls between
     // them are chances to cancel.
-    const Execution quiet{exec.threads, nullptr};
+    const Execution quiet = without_progress(exec);
     const auto cancel_point = [&] {
         if (exec.progress) exec.progress->update(0.0);
     };

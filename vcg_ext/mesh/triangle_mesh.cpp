@@ -35,7 +35,7 @@ VertexCorners corners_by_vertex(std::size_t n, const std::vector<Triangle>& tria
                                 const Execution& exec) {
     const auto tasks = std::size_t(thread_count(exec));
     if (tasks < 2 || triangles.size() < kParallelFaces) return corners_by_vertex(n, triangles);
-    const Execution quiet{exec.threads, nullptr};
+    const Execution quiet = without_progress(exec);
     const auto first_of = [&](std::size_t task) { return std::uint32_t(n * task / tasks); };
     VertexCorners c;
     c.start.assign(n + 1, 0);

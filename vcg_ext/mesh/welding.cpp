@@ -24,7 +24,7 @@ std::vector<std::uint32_t> same_position_representatives(const std::vector<Vec3>
     };
     // (position, index) orders every vertex, so any sort gives this one order.
     std::vector<Keyed> order(p.size());
-    parallel_for_blocks({exec.threads, nullptr}, p.size(), kCheapBlock,
+    parallel_for_blocks(without_progress(exec), p.size(), kCheapBlock,
                         [&](std::size_t, std::size_t first, std::size_t end) {
                             for (std::size_t i = first; i < end; ++i)
                                 order[i] = {p[i][0], p[i][1], p[i][2], std::uint32_t(i)};
@@ -50,7 +50,7 @@ std::vector<Triangle> welded_triangles(const std::vector<Triangle>& triangles,
                                        const std::vector<std::uint32_t>& representative,
                                        const Execution& exec) {
     std::vector<Triangle> w(triangles.size());
-    parallel_for_blocks({exec.threads, nullptr}, triangles.size(), kCheapBlock,
+    parallel_for_blocks(without_progress(exec), triangles.size(), kCheapBlock,
                         [&](std::size_t, std::size_t first, std::size_t end) {
                             for (std::size_t t = first; t < end; ++t)
                                 for (int k = 0; k < 3; ++k)

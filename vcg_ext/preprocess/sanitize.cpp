@@ -143,7 +143,7 @@ void merge_near_duplicates(SanitizedCloud& cloud, const Execution& exec, Preproc
 SanitizedCloud sanitize(const PointSet& input, const PreprocessOptions& options,
                         PreprocessReport& report, const Execution& exec, InputOrder order) {
     const std::size_t n = input.size();
-    const Execution quiet{exec.threads, nullptr}; // the phase reports no fraction of its own
+    const Execution quiet = without_progress(exec); // the phase reports no fraction of its own
     report.input_points = n;
     report.fate.assign(n, PointFate::Kept);
     report.duplicate_of.resize(n);
