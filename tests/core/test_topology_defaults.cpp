@@ -78,6 +78,16 @@ struct Method {
     double p; ///< 1 = RsR on the full cloud
 };
 
+/// The defaults, but for the method under test.
+ReconstructionOptions defaults_for(const Method& method) {
+    ReconstructionOptions options;
+    if (method.p < 1)
+        options.collapse.collapse_ratio = method.p;
+    else
+        options.method = hrsr::Method::Rsr;
+    return options;
+}
+
 using GridCase = std::tuple<Cloud, Method>;
 
 std::string grid_name(const ::testing::TestParamInfo<GridCase>& info) {
@@ -106,11 +116,7 @@ class TopologyAtDefaults : public ::testing::TestWithParam<GridCase> {};
 
 TEST_P(TopologyAtDefaults, ClosedManifoldOfTheSurfaceGenus) {
     const auto& [c, method] = GetParam();
-    ReconstructionOptions options; // the defaults, but for the method under test
-    if (method.p < 1)
-        options.collapse.collapse_ratio = method.p;
-    else
-        options.method = hrsr::Method::Rsr;
+    const ReconstructionOptions options = defaults_for(method);
     ReconstructionReport report;
     const Reconstruction r = reconstruct(sample(c), options, {}, report);
     expect_closed_surface(measure_mesh(r.vertex_input_index.size(), r.triangles), report,
@@ -267,11 +273,7 @@ bool reconstruct_model(const ModelCase& c, MeshStats& m, ReconstructionReport& r
         std::filesystem::path(HRSR_SHARED_DATA) / "topology" / model.file;
     if (!std::filesystem::exists(path)) return false;
     const PointSet cloud = testing::without_normals(io::read_point_set(path.string()));
-    ReconstructionOptions options;
-    if (method.p < 1)
-        options.collapse.collapse_ratio = method.p;
-    else
-        options.method = hrsr::Method::Rsr;
+    const ReconstructionOptions options = defaults_for(method);
     const Reconstruction r = reconstruct(cloud, options, {}, report);
     m = measure_mesh(r.vertex_input_index.size(), r.triangles);
     return true;
@@ -353,11 +355,7 @@ TEST_P(HalfTunnelAtDefaults, NoHoleWhereTheModelHasNone) {
         std::filesystem::path(HRSR_SHARED_DATA) / "topology" / "halftunnel_boundary3.ply";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared data not available";
     const io::MeshFile model = io::read_mesh(path.string());
-    ReconstructionOptions options;
-    if (GetParam().p < 1)
-        options.collapse.collapse_ratio = GetParam().p;
-    else
-        options.method = hrsr::Method::Rsr;
+    const ReconstructionOptions options = defaults_for(GetParam());
     ReconstructionReport report;
     const Reconstruction r =
         reconstruct(testing::without_normals(model.points), options, {}, report);
@@ -428,11 +426,7 @@ TEST_P(InterlockedRingsWithNormals, ThreeClosedRingsOfGenusOne) {
     const io::MeshFile mesh = io::read_mesh(path.string());
     PointSet cloud = mesh.points; // outwards, as the mesh is wound
     cloud.normals = testing::area_weighted_vertex_normals(cloud.positions, mesh.triangles);
-    ReconstructionOptions options;
-    if (GetParam().p < 1)
-        options.collapse.collapse_ratio = GetParam().p;
-    else
-        options.method = hrsr::Method::Rsr;
+    const ReconstructionOptions options = defaults_for(GetParam());
     ReconstructionReport report;
     const Reconstruction r = reconstruct(cloud, options, {}, report);
     const MeshStats m = measure_mesh(r.vertex_input_index.size(), r.triangles);
