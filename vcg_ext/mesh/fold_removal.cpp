@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <tuple>
 #include <unordered_map>
@@ -515,6 +516,7 @@ private:
 
     // The faces stand as they did at `undo`.
     void rewind(const Undo& undo) {
+        ++mesh_version_;
         for (std::size_t f = undo.faces; f < triangles_.size(); ++f) alive_[f] = 0;
         for (std::size_t i = retired_log_->size(); i-- > 0;) {
             const std::uint32_t f = (*retired_log_)[i];
@@ -655,6 +657,7 @@ private:
             std::sort(faces.begin(), faces.end());
             faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
             for (std::uint32_t f : faces) alive_[f] = 0; // while the fills are tested
+            set_faces_out(faces);
             const std::optional<DiscBorder> border = disc_border(faces);
             std::optional<std::vector<Triangle>> fill;
             blocker_ = kNoFace;
@@ -663,6 +666,7 @@ private:
             // Closing a hole (a reach is given), a fill without a triangle closes nothing.
             if (reach && fill && fill->empty()) fill.reset();
             for (std::uint32_t f : faces) alive_[f] = 1;
+            set_faces_out({});
             if (!border) return 0;
             if (fill) {
                 replace(faces, *fill, border->inner, border->hole.corners);
@@ -780,8 +784,10 @@ private:
         const std::optional<Hole> hole = link_of(v, fan_triangles);
         if (!hole || (hole->closed && hole->corners.size() < 3)) return false;
         for (std::uint32_t f : fan) alive_[f] = 0; // while the fills are tested
+        set_faces_out(fan);
         const std::optional<std::vector<Triangle>> fill = first_fitting_fill(*hole, facing);
         for (std::uint32_t f : fan) alive_[f] = 1;
+        set_faces_out({});
         if (!fill) return false;
         replace(fan, *fill, {v}, hole->corners);
         return true;
@@ -1099,7 +1105,7 @@ private:
                     const double q = std::min(sub, angle(t));
                     if (q <= best[i * m + j]) continue;
                     if (proper(t, facing) && !repeats_a_face(t) &&
-                        (!avoid_crossings || !intersects_gathered(welded(t)))) {
+                        (!avoid_crossings || !crosses_gathered(welded(t)))) {
                         best[i * m + j] = q;
                         apex[i * m + j] = k;
                     }
@@ -1169,7 +1175,38 @@ private:
     // The standing faces whose boxes meet `box`, each once with its box. A fill's triangles lie
     // in the box of the hole's corners: one search there serves all its tests.
     void gather_standing(const Box& box) {
+        gathered_box_ = box;
         near_.gather(grid_, geometry_, box, [&](std::uint32_t f) { return alive_[f] != 0; });
+    }
+
+    // The faces taken out while fills are tested (sorted): with the mesh's version, what
+    // crosses_gathered()'s answers hold for.
+    void set_faces_out(std::vector<std::uint32_t> faces) {
+        std::sort(faces.begin(), faces.end());
+        faces_out_ = std::move(faces);
+    }
+
+    // intersects_gathered() for the triangulations of a hole (best_fill), remembered while the
+    // mesh and the faces taken out stay the same: the fills facing the normals and then the
+    // others, and the corners tried one after the other, test many of the same triangles
+    // against the same faces. The blocker is remembered with the answer, so that it is the face
+    // the test would find again (the same gathered faces in the same order).
+    bool crosses_gathered(const Triangle& t) {
+        if (crossing_memo_version_ != mesh_version_) {
+            crossing_memo_.clear();
+            crossing_memo_version_ = mesh_version_;
+        }
+        const Box& b = gathered_box_;
+        std::map<Triangle, std::uint32_t>& memo =
+            crossing_memo_[{faces_out_, {b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]}}];
+        const auto [it, inserted] = memo.try_emplace(t, kNoFace);
+        if (!inserted) {
+            if (it->second != kNoFace) blocker_ = it->second;
+            return it->second != kNoFace;
+        }
+        if (!intersects_gathered(t)) return false;
+        it->second = blocker_;
+        return true;
     }
 
     // intersects_standing() among the gathered faces (t within the box they were gathered for).
@@ -1256,6 +1293,7 @@ private:
 
     // A face leaves the mesh: the pairs it was in are gone.
     void retire(std::uint32_t f) {
+        ++mesh_version_;
         alive_[f] = 0;
         for (std::uint32_t v : triangles_[f]) touched_[v] = 1;
         if (retired_log_) retired_log_->push_back(f);
@@ -1266,6 +1304,7 @@ private:
 
     void add(const Triangle& t) {
         const auto f = std::uint32_t(triangles_.size());
+        ++mesh_version_;
         triangles_.push_back(t);
         geometry_.add(welded(t));
         alive_.push_back(1);
@@ -1295,8 +1334,17 @@ private:
     std::vector<std::uint8_t> given_border_; ///< per vertex: on the given mesh's border (lazy)
     const std::vector<TrianglePair>& pairs_;
     std::vector<std::uint32_t> partner_start_, partner_, live_pairs_;
-    FacesNearBox near_;                      ///< gather_standing()'s faces
-    std::uint32_t blocker_ = kNoFace;        ///< the standing face that the last fill crossed
+    FacesNearBox near_;                    ///< gather_standing()'s faces
+    std::uint32_t blocker_ = kNoFace;      ///< the standing face that the last fill crossed
+    std::size_t mesh_version_ = 0;         ///< changes whenever a face goes or comes
+    std::vector<std::uint32_t> faces_out_; ///< taken out while fills are tested (sorted)
+    /// crosses_gathered()'s answers (the face crossed, or kNoFace) for the mesh's version,
+    /// by the faces out and the box the faces were gathered in (their order decides the blocker)
+    std::map<std::pair<std::vector<std::uint32_t>, std::array<double, 6>>,
+             std::map<Triangle, std::uint32_t>>
+        crossing_memo_;
+    std::size_t crossing_memo_version_ = ~std::size_t(0);
+    Box gathered_box_{};                     ///< of the last gather_standing()
     std::size_t reinserted_ = 0;             ///< removed vertices put back (reinsert)
     std::size_t placed_ = 0;                 ///< vertices without a face given, placed (D-37)
     std::vector<Triangle> inner_cuts_;       ///< faces cut with no edge on the border
