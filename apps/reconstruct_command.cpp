@@ -97,6 +97,7 @@ nlohmann::json fold_repair_json(const ReconstructionReport& r) {
             {"vertex_copies", r.fold_removal.vertex_copies},
             {"points_in_no_triangle_placed", r.fold_removal.points_placed},
             {"small_holes_closed", r.fold_removal.small_holes_closed},
+            {"slits_closed", r.fold_removal.slits_closed},
             {"intersecting_pairs_left", r.fold_removal.pairs_after}};
 }
 
@@ -267,10 +268,10 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
         std::printf("  folds: %zu intersecting triangle pairs, %zu edge flips, %zu pairs left; "
                     "%zu vertices taken out (%zu holes filled again), %zu faces cut, %zu pairs "
                     "left; %zu points in no triangle placed into a face; %zu small holes "
-                    "closed\n",
+                    "and %zu slits closed\n",
                     r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after,
                     f.vertices_removed, f.holes_refilled, f.faces_cut, f.pairs_after,
-                    f.points_placed, f.small_holes_closed);
+                    f.points_placed, f.small_holes_closed, f.slits_closed);
     }
     if (r.flat_faces.found > 0)
         std::printf("  faces without area (corners on one line): %zu, %zu edges flipped, %zu taken "

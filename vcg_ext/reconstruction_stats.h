@@ -27,6 +27,7 @@ struct FoldRemovalStats {
     std::size_t vertex_copies = 0;       ///< made where a cut pinched a vertex (§5.8)
     std::size_t points_placed = 0;       ///< points in no triangle put into a face (D-37)
     std::size_t small_holes_closed = 0;  ///< loops of ≤ 5 edges that D-28 left, closed (D-38)
+    std::size_t slits_closed = 0;        ///< border loops narrower than 1.5 spacings, closed (D-48)
 };
 
 /// D-36 (mesh/flat_faces.h): faces with collinear corners in the coordinates as written.

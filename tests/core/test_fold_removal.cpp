@@ -335,6 +335,71 @@ TEST(FoldRemoval, PinholesOfAClosedPieceCloseOtherBordersStay) {
     }
 }
 
+// `m` without the faces whose three corners all satisfy `gone`, and without the vertices that
+// leaves without a face.
+template <class Gone>
+TestMesh without_faces(const TestMesh& m, Gone&& gone) {
+    TestMesh out;
+    std::vector<std::uint32_t> renumbered(m.positions.size(), ~0u);
+    for (const Triangle& t : m.triangles) {
+        if (gone(m.positions[t[0]]) && gone(m.positions[t[1]]) && gone(m.positions[t[2]])) continue;
+        Triangle kept;
+        for (int k = 0; k < 3; ++k) {
+            if (renumbered[t[k]] == ~0u) {
+                renumbered[t[k]] = std::uint32_t(out.positions.size());
+                out.positions.push_back(m.positions[t[k]]);
+            }
+            kept[k] = renumbered[t[k]];
+        }
+        out.triangles.push_back(kept);
+    }
+    return out;
+}
+
+// D-48: a slit (a border loop whose sides are a spacing apart, long for its width) closes with
+// every vertex kept; one two spacings wide, a round hole and the patch's own border stay.
+TEST(FoldRemoval, SlitsCloseRoundHolesStay) {
+    constexpr int n = 24;                    // spacing 1/24
+    const auto on_slit = [](const Vec3& p) { // one row of cells, ten long
+        return p[1] > 5.5 / n && p[1] < 7.5 / n && p[0] > 3.5 / n && p[0] < 14.5 / n;
+    };
+    const auto on_wide_slit = [](const Vec3& p) { // two rows of cells, ten long
+        return p[1] > 10.5 / n && p[1] < 13.5 / n && p[0] > 3.5 / n && p[0] < 14.5 / n;
+    };
+    const auto in_hole = [](const Vec3& p) { // a block of 4 x 4 cells
+        return p[0] > 15.5 / n && p[0] < 20.5 / n && p[1] > 14.5 / n && p[1] < 19.5 / n;
+    };
+    const TestMesh m = without_faces(
+        without_faces(without_faces(testing::square_patch(n), on_slit), on_wide_slit), in_hole);
+    ASSERT_EQ(measure_mesh(m.positions.size(), m.triangles).boundary_loops, 4u);
+    std::vector<Triangle> triangles = m.triangles;
+    const FoldRemoval r = remove_folds(m.positions, face_normals_at_vertices(m), triangles, {});
+    const MeshStats s = kept_and_clean(m, r, triangles);
+    EXPECT_EQ(r.stats.slits_closed, 1u);
+    EXPECT_EQ(r.stats.small_holes_closed, 0u);
+    EXPECT_EQ(s.boundary_loops, 3u);
+    EXPECT_EQ(s.boundary_edges, 4u * n + 24u + 16u);
+    EXPECT_EQ(genera(s), (std::vector<long>{0}));
+}
+
+// D-48 on a closed surface: a slit along a torus's tube closes it with its genus.
+TEST(FoldRemoval, ASlitOfATorusClosesWithItsHandle) {
+    const TestMesh torus = testing::torus(64, 24);
+    // The row of cells just above the outer equator, over a quarter of the ring: 15 long.
+    const TestMesh m = without_faces(torus, [](const Vec3& p) {
+        return p[2] > -1e-9 && p[2] < 0.1 && p[0] > 0 && p[1] > 0 && std::hypot(p[0], p[1]) > 1.2;
+    });
+    const MeshStats before = measure_mesh(m.positions.size(), m.triangles);
+    ASSERT_EQ(before.boundary_loops, 1u);
+    ASSERT_EQ(before.boundary_edges, 32u);
+    std::vector<Triangle> triangles = m.triangles;
+    const FoldRemoval r = remove_folds(m.positions, face_normals_at_vertices(m), triangles, {});
+    const MeshStats s = kept_and_clean(m, r, triangles);
+    EXPECT_EQ(r.stats.slits_closed, 1u);
+    EXPECT_EQ(s.boundary_edges, 0u);
+    EXPECT_EQ(genera(s), (std::vector<long>{1}));
+}
+
 // D-38: a gap of up to six edges is closed after the folds, every vertex kept; seven edges is
 // beyond it (and beyond D-45, which is off here: pinhole_edges at D-28's five).
 TEST(FoldRemoval, GapsOfUpToSixEdgesClose) {

@@ -40,6 +40,14 @@ constexpr double kMinBorderPutBackAngle = 15.0 * M_PI / 180.0;
 // bunny 119 → 125, lion 3,393 → 3,425, LMS400 table 5,434 → 5,476 boundary edges
 // (docs/BENCHMARKS.md, session 28).
 constexpr std::size_t kMaxClosedGap = kMaxFilledLoop + 1;
+// D-48: a border loop is a slit when its two sides are at most kMaxSlitWidth edges of the faces
+// around it apart (medians: a gap narrower than about a spacing and a half holds no row of
+// points), at most kMaxSlitRoundness as wide as a circle of its perimeter (the camel head's
+// slits 0.21–0.41, round holes 0.9–1.4) and none of its edges is longer than kMaxSlitEdge such
+// edges (docs/ALGORITHM.md D-48).
+constexpr double kMaxSlitWidth = 1.5;
+constexpr double kMaxSlitRoundness = 0.6;
+constexpr double kMaxSlitEdge = 4.0;
 // A walk around a vertex's fan gives up after this many faces (a fan is far smaller).
 constexpr std::size_t kMaxFanWalk = 1024;
 constexpr std::uint32_t kNoFace = ~0u;
@@ -144,6 +152,7 @@ public:
         close_small_holes_left(stats);
         put_back_the_rest();
         close_pinholes(stats);
+        close_slits(stats);
         stats.vertices_reinserted = reinserted_;
         stats.points_placed = placed_;
         stats.vertices_removed -= reinserted_;
@@ -313,6 +322,70 @@ private:
                 close_loop_at(v, pinhole_edges_, tried, stats,
                               std::size_t(loop_edges[i]) / kMaxFilledLoop);
         }
+    }
+
+    // D-48: a border loop of up to kMaxOptimisedHole edges whose two sides run closer than
+    // kMaxSlitWidth edges of the faces around it (a slit: where a thin part's rim or two sheets
+    // closer than the spacing left the faces apart) is closed as D-38 closes a gap; every vertex
+    // the closing takes out goes back, or it is undone.
+    void close_slits(FoldRemovalStats& stats) {
+        const std::vector<std::uint32_t> starts = border_candidates();
+        const std::vector<std::size_t> loop_edges = border_loops_at(starts, kMaxOptimisedHole);
+        std::vector<std::uint8_t> tried(positions_.size(), 0);
+        for (std::size_t i = 0; i < starts.size(); ++i) {
+            const std::uint32_t v = starts[i];
+            if (tried[v] || loop_edges[i] <= kMaxClosedGap || loop_edges[i] > kMaxOptimisedHole ||
+                faces_of(v).empty())
+                continue;
+            const std::optional<Hole> hole = small_hole(v, false, kMaxOptimisedHole);
+            if (!hole) continue;
+            for (std::uint32_t c : hole->corners) tried[c] = 1;
+            if (!is_slit(hole->corners)) continue;
+            const std::size_t closed_before = stats.small_holes_closed;
+            close_loop_at(v, kMaxOptimisedHole, tried, stats);
+            stats.slits_closed += stats.small_holes_closed - closed_before;
+            stats.small_holes_closed = closed_before;
+        }
+    }
+
+    // A slit: the loop's median width (each corner's distance to the nearest corner at least a
+    // quarter of the loop away along it) is at most kMaxSlitWidth spacings, where the spacing is
+    // the median edge of the faces around its corners; it is long for its width (at most
+    // kMaxSlitRoundness of a circle's of its perimeter: a round hole that narrow is D-38's); and
+    // no loop edge is longer than kMaxSlitEdge spacings (a loop with such edges is what is left
+    // of a real hole that faces already bridge: the shark's bored holes at p = 1/4).
+    bool is_slit(const std::vector<std::uint32_t>& loop) const {
+        const std::size_t m = loop.size();
+        std::vector<double> edges;
+        for (std::uint32_t c : loop)
+            any_face(c, [&](const Triangle& t) {
+                for (int k = 0; k < 3; ++k)
+                    edges.push_back((positions_[t[k]] - positions_[t[(k + 1) % 3]]).Norm());
+                return false;
+            });
+        if (edges.empty()) return false;
+        std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2),
+                         edges.end());
+        const double spacing = edges[edges.size() / 2];
+        double perimeter = 0;
+        for (std::size_t i = 0; i < m; ++i) {
+            const double edge = (positions_[loop[i]] - positions_[loop[(i + 1) % m]]).Norm();
+            if (edge > kMaxSlitEdge * spacing) return false;
+            perimeter += edge;
+        }
+        const std::size_t apart = std::max<std::size_t>(2, m / 4);
+        std::vector<double> width(m, std::numeric_limits<double>::infinity());
+        for (std::size_t i = 0; i < m; ++i)
+            for (std::size_t j = 0; j < m; ++j) {
+                const std::size_t steps = std::min((i + m - j) % m, (j + m - i) % m);
+                if (steps >= apart)
+                    width[i] =
+                        std::min(width[i], (positions_[loop[i]] - positions_[loop[j]]).Norm());
+            }
+        std::nth_element(width.begin(), width.begin() + std::ptrdiff_t(m / 2), width.end());
+        const double median_width = width[m / 2];
+        return median_width <= kMaxSlitWidth * spacing &&
+               median_width <= kMaxSlitRoundness * perimeter / (2 * M_PI);
     }
 
     // The vertices a border loop may start at: those on the border of the given mesh, and the
