@@ -42,8 +42,10 @@ struct FoldRemoval {
 /// a standing face near them, or close a border corner next to them, where that fits; vertices
 /// still without a face are not in the result. Then (D-45) the loops of more than 5 edges of a
 /// piece whose every border loop has at most `pinhole_edges` edges (and more interior than
-/// border vertices) are closed so too, leaving out at most a vertex per 5 edges. Two faces on
-/// the same three positions are a pair (a fin folded flat onto a face through a pinched copy).
+/// border vertices) are closed so too, leaving out at most a vertex per 5 edges; and (D-48) the
+/// slits, loops of up to 48 edges whose sides are at most 1.5 spacings apart, as D-38 closes a
+/// gap. Two faces on the same three positions are a pair (a fin folded flat onto a face through a
+/// pinched copy).
 FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
                          std::vector<Triangle>& triangles, const Execution& exec,
                          std::size_t pinhole_edges = kMaxFilledLoop);
