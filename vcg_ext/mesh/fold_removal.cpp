@@ -297,7 +297,8 @@ private:
     void close_small_holes_left(FoldRemovalStats& stats) {
         std::vector<std::uint8_t> tried(positions_.size(), 0);
         for (std::uint32_t v : border_candidates())
-            if (!tried[v] && !faces_of(v).empty()) close_loop_at(v, kMaxClosedGap, tried, stats);
+            if (!tried[v] && !faces_of(v).empty())
+                stats.small_holes_closed += close_loop_at(v, kMaxClosedGap, tried, stats);
     }
 
     // D-45: once every other vertex is back, the loops longer than kMaxFilledLoop and no longer
@@ -319,8 +320,8 @@ private:
             const std::uint32_t v = starts[i];
             if (!tried[v] && loop_edges[i] > kMaxFilledLoop && loop_edges[i] <= pinhole_edges_ &&
                 closed_but_for_pinholes[i] && !faces_of(v).empty())
-                close_loop_at(v, pinhole_edges_, tried, stats,
-                              std::size_t(loop_edges[i]) / kMaxFilledLoop);
+                stats.small_holes_closed += close_loop_at(
+                    v, pinhole_edges_, tried, stats, std::size_t(loop_edges[i]) / kMaxFilledLoop);
         }
     }
 
@@ -340,11 +341,8 @@ private:
             const std::optional<Hole> hole = small_hole(v, false, kMaxOptimisedHole);
             if (!hole) continue;
             for (std::uint32_t c : hole->corners) tried[c] = 1;
-            if (!is_slit(hole->corners)) continue;
-            const std::size_t closed_before = stats.small_holes_closed;
-            close_loop_at(v, kMaxOptimisedHole, tried, stats);
-            stats.slits_closed += stats.small_holes_closed - closed_before;
-            stats.small_holes_closed = closed_before;
+            if (is_slit(hole->corners))
+                stats.slits_closed += close_loop(*hole, kMaxOptimisedHole, stats);
         }
     }
 
@@ -404,19 +402,25 @@ private:
     }
 
     // Closes the loop through v of at most `limit` edges, if there is one, as D-38 does; at
-    // most `may_lose` of the vertices it takes out may stay out.
-    void close_loop_at(std::uint32_t v, std::size_t limit, std::vector<std::uint8_t>& tried,
+    // most `may_lose` of the vertices it takes out may stay out. Whether it closed.
+    bool close_loop_at(std::uint32_t v, std::size_t limit, std::vector<std::uint8_t>& tried,
                        FoldRemovalStats& stats, std::size_t may_lose = 0) {
         const std::optional<Hole> hole = small_hole(v, false, limit);
-        if (!hole) return;
+        if (!hole) return false;
         for (std::uint32_t c : hole->corners) tried[c] = 1;
+        return close_loop(*hole, limit, stats, may_lose);
+    }
+
+    // close_loop_at() on the loop found.
+    bool close_loop(const Hole& hole, std::size_t limit, FoldRemovalStats& stats,
+                    std::size_t may_lose = 0) {
         // A lone triangle's outline: the fill would repeat the triangle.
-        if (hole->corners.size() == 3 &&
-            repeats_a_face({hole->corners[2], hole->corners[1], hole->corners[0]}))
-            return;
+        if (hole.corners.size() == 3 &&
+            repeats_a_face({hole.corners[2], hole.corners[1], hole.corners[0]}))
+            return false;
         const Undo undo = begin_undo();
         std::size_t lost = 0;
-        bool closed = close_small_hole(*hole, limit);
+        bool closed = close_small_hole(hole, limit);
         if (closed && may_lose == 0) {
             closed = put_back_taken_out();
         } else if (closed) {
@@ -424,7 +428,6 @@ private:
             closed = lost <= may_lose;
         }
         if (closed) {
-            ++stats.small_holes_closed;
             stats.vertices_removed += lost;
         } else {
             rewind(undo);
@@ -432,6 +435,7 @@ private:
         retired_log_.reset();
         // Every vertex it took out is back (or lost, counted as removed): none counts as put back.
         reinserted_ = undo.reinserted;
+        return closed;
     }
 
     // Per start, whether its piece (connected by standing faces) is closed but for loops of at
@@ -1249,6 +1253,7 @@ private:
     // in the box of the hole's corners: one search there serves all its tests.
     void gather_standing(const Box& box) {
         gathered_box_ = box;
+        crossing_answers_ = nullptr;
         near_.gather(grid_, geometry_, box, [&](std::uint32_t f) { return alive_[f] != 0; });
     }
 
@@ -1257,6 +1262,7 @@ private:
     void set_faces_out(std::vector<std::uint32_t> faces) {
         std::sort(faces.begin(), faces.end());
         faces_out_ = std::move(faces);
+        crossing_answers_ = nullptr;
     }
 
     // intersects_gathered() for the triangulations of a hole (best_fill), remembered while the
@@ -1268,11 +1274,14 @@ private:
         if (crossing_memo_version_ != mesh_version_) {
             crossing_memo_.clear();
             crossing_memo_version_ = mesh_version_;
+            crossing_answers_ = nullptr;
         }
-        const Box& b = gathered_box_;
-        std::map<Triangle, std::uint32_t>& memo =
-            crossing_memo_[{faces_out_, {b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]}}];
-        const auto [it, inserted] = memo.try_emplace(t, kNoFace);
+        if (!crossing_answers_) { // the faces out or the box changed: look up their answers once
+            const Box& b = gathered_box_;
+            crossing_answers_ = &crossing_memo_[{
+                faces_out_, {b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]}}];
+        }
+        const auto [it, inserted] = crossing_answers_->try_emplace(t, kNoFace);
         if (!inserted) {
             if (it->second != kNoFace) blocker_ = it->second;
             return it->second != kNoFace;
@@ -1417,6 +1426,8 @@ private:
              std::map<Triangle, std::uint32_t>>
         crossing_memo_;
     std::size_t crossing_memo_version_ = ~std::size_t(0);
+    /// crossing_memo_'s entry for the current faces out and gathered box (null: look it up)
+    std::map<Triangle, std::uint32_t>* crossing_answers_ = nullptr;
     Box gathered_box_{};                     ///< of the last gather_standing()
     std::size_t reinserted_ = 0;             ///< removed vertices put back (reinsert)
     std::size_t placed_ = 0;                 ///< vertices without a face given, placed (D-37)
