@@ -4,10 +4,19 @@
 
 namespace hrsr::rsr {
 
+namespace {
+// Darts reserved for every vertex at once, in vertex order (a vertex of a triangle mesh has six
+// neighbours on average): the rotations of nearby vertices (the points come in spatial order,
+// D-40) then lie near each other in memory, where growing each one as edges come left them
+// scattered; the face split reads them in length order, all over the cloud.
+constexpr std::size_t kReservedDarts = 8;
+} // namespace
+
 RotationSystem::RotationSystem(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals)
     : positions_(positions), normals_(normals), rotation_(positions.size()) {
     frames_.reserve(normals.size());
     for (const Vec3& n : normals) frames_.push_back(tangent_frame(n));
+    for (std::vector<Dart>& darts : rotation_) darts.reserve(kReservedDarts);
 }
 
 double RotationSystem::angle(std::uint32_t v, std::uint32_t w) const {
