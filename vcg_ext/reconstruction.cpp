@@ -415,7 +415,7 @@ struct InSpatialOrder {
         begin_phase(exec, "spatial order");
         Timer timer(report.preprocess.timings, "spatial order");
         order = spatial_order(input.positions, exec);
-        points = reordered(input, order);
+        points = reordered(input, order, exec);
     }
     SpatialOrder order;
     PointSet points;

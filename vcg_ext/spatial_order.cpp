@@ -49,30 +49,34 @@ void sort_by_key(std::vector<Keyed>& items, const Execution& exec) {
 // The box the curve spans: the finite points' bounding box, cut down on an axis where points lie
 // more than half the central extent (the 0.1 % to 99.9 % order statistics) beyond it. A few far
 // outliers, clamped into the outermost cells, then do not coarsen the cells of everything else.
-void central_box(const std::vector<Vec3>& positions, Vec3& lo, Vec3& hi) {
-    std::vector<double> values;
-    values.reserve(positions.size());
-    for (int k = 0; k < 3; ++k) {
-        values.clear();
-        for (const Vec3& p : positions)
-            if (finite(p)) values.push_back(p[k]);
-        if (values.empty()) {
-            lo[k] = hi[k] = 0;
-            continue;
-        }
-        const auto [min, max] = std::minmax_element(values.begin(), values.end());
-        lo[k] = *min;
-        hi[k] = *max;
-        const auto last = double(values.size() - 1);
-        const auto low = values.begin() + std::ptrdiff_t(std::floor(kOutlierFraction * last));
-        const auto high = values.begin() + std::ptrdiff_t(std::ceil((1 - kOutlierFraction) * last));
-        std::nth_element(values.begin(), low, values.end());
-        const double central_lo = *low;
-        std::nth_element(values.begin(), high, values.end());
-        const double central_hi = *high, margin = kOutlierMargin * (central_hi - central_lo);
-        lo[k] = std::max(lo[k], central_lo - margin);
-        hi[k] = std::min(hi[k], central_hi + margin);
-    }
+// The axes in parallel (each its own copy of the coordinates: exact order statistics).
+void central_box(const std::vector<Vec3>& positions, Vec3& lo, Vec3& hi, const Execution& exec) {
+    parallel_for(
+        exec, 3,
+        [&](std::size_t k) {
+            std::vector<double> values;
+            values.reserve(positions.size());
+            for (const Vec3& p : positions)
+                if (finite(p)) values.push_back(p[k]);
+            if (values.empty()) {
+                lo[k] = hi[k] = 0;
+                return;
+            }
+            const auto [min, max] = std::minmax_element(values.begin(), values.end());
+            lo[k] = *min;
+            hi[k] = *max;
+            const auto last = double(values.size() - 1);
+            const auto low = values.begin() + std::ptrdiff_t(std::floor(kOutlierFraction * last));
+            const auto high =
+                values.begin() + std::ptrdiff_t(std::ceil((1 - kOutlierFraction) * last));
+            std::nth_element(values.begin(), low, values.end());
+            const double central_lo = *low;
+            std::nth_element(values.begin(), high, values.end());
+            const double central_hi = *high, margin = kOutlierMargin * (central_hi - central_lo);
+            lo[k] = std::max(lo[k], central_lo - margin);
+            hi[k] = std::min(hi[k], central_hi + margin);
+        },
+        1);
 }
 
 // Points that share a cell (the key) follow their exact coordinates, then the input order (only
@@ -97,7 +101,7 @@ void order_within_cells(const std::vector<Vec3>& positions, std::vector<Keyed>& 
 
 SpatialOrder spatial_order(const std::vector<Vec3>& positions, const Execution& exec) {
     Vec3 lo, hi;
-    central_box(positions, lo, hi);
+    central_box(positions, lo, hi, exec);
     const double side = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 0.0});
     const double cells = double((std::uint64_t(1) << kBitsPerAxis) - 1);
     const double scale = side > 0 && std::isfinite(side) ? cells / side : 0.0;
@@ -117,20 +121,23 @@ SpatialOrder spatial_order(const std::vector<Vec3>& positions, const Execution& 
     sort_by_key(items, exec);
     order_within_cells(positions, items);
     SpatialOrder order;
-    order.input_index.reserve(items.size());
-    for (const Keyed& k : items) order.input_index.push_back(k.index);
+    order.input_index.resize(items.size());
+    parallel_for(exec, items.size(), [&](std::size_t i) { order.input_index[i] = items[i].index; });
     return order;
 }
 
-PointSet reordered(const PointSet& input, const SpatialOrder& order) {
+PointSet reordered(const PointSet& input, const SpatialOrder& order, const Execution& exec) {
     PointSet out;
     out.precision = input.precision;
-    out.positions.reserve(input.size());
-    for (std::uint32_t i : order.input_index) out.positions.push_back(input.positions[i]);
-    if (input.normals.size() == input.size()) {
-        out.normals.reserve(input.size());
-        for (std::uint32_t i : order.input_index) out.normals.push_back(input.normals[i]);
-    } else {
+    const std::vector<std::uint32_t>& from = order.input_index;
+    out.positions.resize(from.size());
+    const bool normals = input.normals.size() == input.size();
+    if (normals) out.normals.resize(from.size());
+    parallel_for(exec, from.size(), [&](std::size_t i) {
+        out.positions[i] = input.positions[from[i]];
+        if (normals) out.normals[i] = input.normals[from[i]];
+    });
+    if (!normals) {
         out.normals = input.normals;
     }
     return out;

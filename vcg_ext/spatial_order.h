@@ -28,6 +28,6 @@ SpatialOrder spatial_order(const std::vector<Vec3>& positions, const Execution& 
 /// The points the algorithm reads (positions, and normals when the input has one per point),
 /// in `order`; attributes and warnings stay with the input, whose indices the result speaks of.
 /// Normals whose count does not match the points are copied as given, for sanitising to judge.
-PointSet reordered(const PointSet& input, const SpatialOrder& order);
+PointSet reordered(const PointSet& input, const SpatialOrder& order, const Execution& exec = {});
 
 } // namespace hrsr
