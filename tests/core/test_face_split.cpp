@@ -18,6 +18,9 @@ namespace hrsr {
 namespace {
 
 struct Split {
+    std::unique_ptr<const std::vector<Vec3>> normals; ///< those the rotation measures with
+    std::unique_ptr<rsr::RotationSystem> embedded;    ///< the rotation after the phase
+    std::unique_ptr<rsr::Faces> faces_of;             ///< its faces
     std::vector<rsr::LocalTriangle> triangles;
     rsr::FaceSplitStats stats;
     std::vector<std::vector<std::uint32_t>> rotation; ///< neighbours of each vertex, in order
@@ -31,14 +34,17 @@ Split split(const rsr::ComponentCloud& cloud, const KnnIndex& index, int threads
     const rsr::CandidateGraph graph = rsr::build_candidate_graph(cloud, index, pre, {});
     const auto candidates = rsr::face_split_candidates(graph, cloud, pre.distance, {});
     const SpanningForest tree = rsr::candidate_spanning_tree(graph, cloud);
-    const std::vector<Vec3> normals = rsr::fix_leaf_normals(tree, cloud);
-    rsr::RotationSystem rotation(cloud.smoothed, normals);
+    Split s;
+    s.normals = std::make_unique<const std::vector<Vec3>>(rsr::fix_leaf_normals(tree, cloud));
+    const std::vector<Vec3>& normals = *s.normals;
+    s.embedded = std::make_unique<rsr::RotationSystem>(cloud.smoothed, normals);
+    rsr::RotationSystem& rotation = *s.embedded;
     for (std::uint32_t v : tree.order)
         if (tree.parent[v] != SpanningForest::kRoot) rotation.insert_edge(tree.parent[v], v);
-    rsr::Faces faces(rotation);
+    s.faces_of = std::make_unique<rsr::Faces>(rotation);
+    rsr::Faces& faces = *s.faces_of;
     faces.label_all();
     rsr::GeometryCheck geometry(index, cloud.smoothed, normals, rotation);
-    Split s;
     rsr::Embedding e{rotation, faces, geometry, s.triangles, nullptr};
     s.stats = rsr::split_faces(e, candidates, {threads, nullptr}, look_ahead);
     for (std::uint32_t v = 0; v < rotation.vertex_count(); ++v) {
@@ -77,6 +83,34 @@ TEST(FaceSplit, LookingAheadInParallelTakesTheCandidatesAsOneByOne) {
                          << "look-ahead " << look_ahead << ", " << threads << " threads");
             expect_same(split(cloud, index, threads, look_ahead), one_by_one);
         }
+}
+
+// The look-ahead rejects a candidate at a vertex surrounded by triangles without its angles: no
+// vertex not adjacent has a wedge in the face of one of its wedges. Checked on every candidate of
+// such a vertex after the phase (the rotation is final; every triangle there was one before).
+TEST(FaceSplit, AVertexSurroundedByTrianglesSharesNoFaceWithOneNotAdjacent) {
+    PointSet s = testing::sample_double_torus(12000, testing::Density::Graded);
+    testing::add_noise(s, 0.004 * testing::bounding_box_diagonal(s));
+    const rsr::ComponentCloud cloud{s.positions, s.positions, s.normals, s.size(), {}, {}};
+    const KnnIndex index(cloud.smoothed);
+    const Split after = split(cloud, index, 2, rsr::kFaceSplitLookAhead);
+    const rsr::RotationSystem& rotation = *after.embedded;
+    const PreprocessOptions pre;
+    const rsr::CandidateGraph graph = rsr::build_candidate_graph(cloud, index, pre, {});
+    std::size_t surrounded = 0, checked = 0;
+    for (std::uint32_t v = 0; v < rotation.vertex_count(); ++v) {
+        if (!rsr::surrounded_by_triangles(rotation, v)) continue;
+        ++surrounded;
+        for (const std::uint32_t* w = graph.graph.begin(v); w != graph.graph.end(v); ++w)
+            if (!rotation.adjacent(v, *w)) {
+                ++checked;
+                EXPECT_NE(after.faces_of->face_of_wedge(v, *w),
+                          after.faces_of->face_of_wedge(*w, v))
+                    << v << " to " << *w;
+            }
+    }
+    EXPECT_GT(surrounded, rotation.vertex_count() / 2);
+    EXPECT_GT(checked, 10 * surrounded);
 }
 
 // The candidates are sorted in parallel: the list must be the ascending (length, i, j) one for any

@@ -17,6 +17,17 @@ std::uint8_t triangles_on_edge(const RotationSystem& rs, std::uint32_t u, std::u
     return rs.dart(u, rs.find(u, w)).triangles;
 }
 
+// Every wedge at v is then a recorded triangle, which stays a face (the face split only splits
+// faces, and a triangle cannot be split). An edge from v to a vertex not adjacent would start in
+// such a triangle, whose face the other end does not reach: the ends' wedges lie in different
+// faces, known without their angles (most candidates end so: 1.8M of 2.1M at 800k points).
+bool surrounded_by_triangles(const RotationSystem& rs, std::uint32_t v) {
+    if (rs.degree(v) < 3) return false;
+    for (const Dart& d : rs.darts(v))
+        if (d.triangles < 2) return false;
+    return true;
+}
+
 namespace {
 
 bool has_common_neighbour(const RotationSystem& rs, std::uint32_t v1, std::uint32_t v2) {
@@ -83,7 +94,9 @@ void work_out_ahead(const Embedding& e, const std::vector<CandidateEdge>& candid
         const std::uint32_t v1 = candidates[first + k].i, v2 = candidates[first + k].j;
         if (e.rotation.adjacent(v1, v2)) {
             f.outlook[k] = Outlook::Adjacent;
-        } else if (e.faces.face_of_wedge(v1, v2) != e.faces.face_of_wedge(v2, v1)) {
+        } else if (surrounded_by_triangles(e.rotation, v1) ||
+                   surrounded_by_triangles(e.rotation, v2) ||
+                   e.faces.face_of_wedge(v1, v2) != e.faces.face_of_wedge(v2, v1)) {
             f.outlook[k] = Outlook::DifferentFaces;
         } else {
             f.outlook[k] = Outlook::Open;

@@ -32,4 +32,9 @@ void count_triangle_edge(RotationSystem& rotation, std::uint32_t u, std::uint32_
 /// Triangle count of edge {u, w} (which must exist).
 std::uint8_t triangles_on_edge(const RotationSystem& rotation, std::uint32_t u, std::uint32_t w);
 
+/// Every edge at v (at least three) holds two recorded triangles: during the face split, no
+/// vertex not adjacent to v has a wedge in the face of any of v's wedges (the look-ahead rejects
+/// its candidates without their angles).
+bool surrounded_by_triangles(const RotationSystem& rotation, std::uint32_t v);
+
 } // namespace hrsr::rsr
