@@ -122,7 +122,11 @@ SpatialOrder spatial_order(const std::vector<Vec3>& positions, const Execution& 
     order_within_cells(positions, items);
     SpatialOrder order;
     order.input_index.resize(items.size());
-    parallel_for(exec, items.size(), [&](std::size_t i) { order.input_index[i] = items[i].index; });
+    parallel_for_blocks(exec, items.size(), kCheapBlock,
+                        [&](std::size_t, std::size_t first, std::size_t end) {
+                            for (std::size_t i = first; i < end; ++i)
+                                order.input_index[i] = items[i].index;
+                        });
     return order;
 }
 
@@ -132,14 +136,17 @@ PointSet reordered(const PointSet& input, const SpatialOrder& order, const Execu
     const std::vector<std::uint32_t>& from = order.input_index;
     out.positions.resize(from.size());
     const bool normals = input.normals.size() == input.size();
-    if (normals) out.normals.resize(from.size());
-    parallel_for(exec, from.size(), [&](std::size_t i) {
-        out.positions[i] = input.positions[from[i]];
-        if (normals) out.normals[i] = input.normals[from[i]];
-    });
-    if (!normals) {
+    if (normals)
+        out.normals.resize(from.size());
+    else
         out.normals = input.normals;
-    }
+    parallel_for_blocks(exec, from.size(), kCheapBlock,
+                        [&](std::size_t, std::size_t first, std::size_t end) {
+                            for (std::size_t i = first; i < end; ++i) {
+                                out.positions[i] = input.positions[from[i]];
+                                if (normals) out.normals[i] = input.normals[from[i]];
+                            }
+                        });
     return out;
 }
 
