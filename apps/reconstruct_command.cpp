@@ -132,6 +132,7 @@ nlohmann::json hrsr_json(const ReconstructionReport& r) {
             {"tiles", e.tiles},
             {"records_replayed_in_tiles", e.replayed_in_tiles},
             {"records_deferred_at_tile_borders", e.deferred_at_tile_borders},
+            {"records_deferred_replayed_in_tile_groups", e.late_replayed_in_groups},
             {"tile_times",
              {{"collapse", tile_times_json(r.collapse_tile_times)},
               {"re-expansion", tile_times_json(e.tile_times)}}}};

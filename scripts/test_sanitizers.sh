@@ -22,7 +22,7 @@ OPT=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1
 # (they rerun code the other tests cover; the normal build runs them all).
 SLOW='clang_format|clang_tidy|meshlab_server|RealScans|Analytic/HrsrSurface|Analytic/RsrSurface'
 SLOW+='|Hrsr.VertexCountFallsAsLMinGrows|SameMeshForOneAndTwoThreads|SameResultForOneAndTwoThreads'
-SLOW+='|SameBytesForRepeatedRuns|CancellationPointsAreNeverFarApart'
+SLOW+='|SameBytesForRepeatedRuns|CancellationPointsAreNeverFarApart|TileGroupsGiveTheSameMesh'
 SLOW+='|CgalAgreement.ScanReconstructions'
 start=$(date +%s)
 

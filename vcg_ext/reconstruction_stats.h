@@ -86,6 +86,7 @@ struct ReexpansionStats {
     std::size_t tiles = 1;                 ///< D-43: tiles replayed in parallel
     std::size_t replayed_in_tiles = 0;     ///< D-43: records replayed by their tile's thread
     std::size_t deferred_at_tile_borders = 0; ///< D-43: reached another tile: replayed after
+    std::size_t late_replayed_in_groups = 0;  ///< D-49: of those, replayed by groups of tiles
     TileTimes tile_times;                     ///< D-43
     bool stopped_at_l_min = false;
 };

@@ -206,33 +206,63 @@ TEST(Hrsr, SameMeshForOneAndTwoThreads) {
         ASSERT_EQ(a.vertex_normals[v], b.vertex_normals[v]);
 }
 
+// A torus cloud of several collapse tiles at the defaults on `threads` threads: closed, genus 1,
+// r_v at least 99.9 %; `check` reads the report.
+template <class Check>
+Reconstruction tiled_torus_run(const PointSet& s, int threads, const Check& check) {
+    Execution exec;
+    exec.threads = threads;
+    ReconstructionReport report;
+    Reconstruction r = reconstruct(s, ReconstructionOptions{}, exec, report);
+    EXPECT_EQ(report.mesh.boundary_edges, 0u);
+    EXPECT_EQ(report.mesh.components.size(), 1u);
+    for (const auto& component : report.mesh.components) EXPECT_EQ(component.genus(), 1);
+    EXPECT_GE(report.vertex_reference_ratio, 0.999);
+    check(report);
+    return r;
+}
+
 // D-42: a cloud of several collapse tiles, at the defaults: closed, genus 1, and the same mesh
 // for 1, 2 and 8 threads.
 TEST(Hrsr, TiledCloudGivesTheSameMeshForAnyThreadCount) {
     const PointSet s = testing::sample_torus(150000, 1.0, 0.3, testing::Density::Graded);
     ASSERT_GT(s.size(), 2 * constants::kCollapseTilePoints);
     auto run = [&](int threads) {
-        Execution exec;
-        exec.threads = threads;
-        ReconstructionReport report;
-        Reconstruction r = reconstruct(s, ReconstructionOptions{}, exec, report);
-        EXPECT_EQ(report.mesh.boundary_edges, 0u);
-        EXPECT_EQ(report.mesh.components.size(), 1u);
-        for (const auto& component : report.mesh.components) EXPECT_EQ(component.genus(), 1);
-        EXPECT_GE(report.vertex_reference_ratio, 0.999);
-        // D-43: most records replayed by their tile's thread, some waiting at tile borders.
-        EXPECT_EQ(report.reexpansion.tiles, 3u);
-        EXPECT_GT(report.reexpansion.replayed_in_tiles, report.reexpansion.records / 2);
-        EXPECT_GT(report.reexpansion.deferred_at_tile_borders, 0u);
-        // Tile times: every stretch's slowest tile at least its mean, at most all the work.
-        for (const TileTimes& t : {report.collapse_tile_times, report.reexpansion.tile_times}) {
-            EXPECT_EQ(t.tiles, 3u);
-            EXPECT_GT(t.stretches, 0u);
-            EXPECT_GE(t.slowest, t.mean);
-            EXPECT_LE(t.slowest, t.work);
-            EXPECT_GE(t.balance(), 1.0);
-        }
-        return r;
+        return tiled_torus_run(s, threads, [](const ReconstructionReport& report) {
+            // D-43: most records replayed by their tile's thread, some waiting at tile borders.
+            EXPECT_EQ(report.reexpansion.tiles, 3u);
+            EXPECT_GT(report.reexpansion.replayed_in_tiles, report.reexpansion.records / 2);
+            EXPECT_GT(report.reexpansion.deferred_at_tile_borders, 0u);
+            EXPECT_EQ(report.reexpansion.late_replayed_in_groups, 0u); // one group (D-49)
+            // Tile times: every stretch's slowest tile at least its mean, at most all the work.
+            for (const TileTimes& t : {report.collapse_tile_times, report.reexpansion.tile_times}) {
+                EXPECT_EQ(t.tiles, 3u);
+                EXPECT_GT(t.stretches, 0u);
+                EXPECT_GE(t.slowest, t.mean);
+                EXPECT_LE(t.slowest, t.work);
+                EXPECT_GE(t.balance(), 1.0);
+            }
+        });
+    };
+    const Reconstruction a = run(1);
+    expect_same_mesh(a, run(2));
+    expect_same_mesh(a, run(8));
+}
+
+// D-49: a cloud of two groups of tiles (ten tiles), at the defaults: the records that waited at
+// the tiles' borders are replayed again by groups in parallel, most of them there; closed, genus
+// 1, and the same mesh for 1, 2 and 8 threads.
+TEST(Hrsr, TileGroupsGiveTheSameMeshForAnyThreadCount) {
+    const PointSet s = testing::sample_torus(600000, 1.0, 0.3, testing::Density::Graded);
+    ASSERT_GT(s.size(), 8 * constants::kCollapseTilePoints);
+    auto run = [&](int threads) {
+        return tiled_torus_run(s, threads, [](const ReconstructionReport& report) {
+            EXPECT_EQ(report.reexpansion.tiles, 10u);
+            EXPECT_GT(2 * report.reexpansion.late_replayed_in_groups,
+                      report.reexpansion.deferred_at_tile_borders);
+            EXPECT_LT(report.reexpansion.late_replayed_in_groups,
+                      report.reexpansion.deferred_at_tile_borders);
+        });
     };
     const Reconstruction a = run(1);
     expect_same_mesh(a, run(2));

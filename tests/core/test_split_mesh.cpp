@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <stdexcept>
 #include <tuple>
 
 namespace hrsr::reexpand {
@@ -259,6 +261,76 @@ TEST(SplitMesh, GuardStopsAtAnotherTilesVertexBeforeAnyChange) {
     EXPECT_EQ(after.f, 8u);
     EXPECT_EQ(m.face_count(), 8u);
     EXPECT_EQ(after.euler, 1);
+}
+
+// D-49: grouped by two tiles, a thread working for group 0 may touch tiles 0 and 1, not tile 2.
+TEST(SplitMesh, GuardByGroupsOfTilesLetsAThreadWorkOnEveryTileOfItsGroup) {
+    const Fixture h = hexagon();
+    SplitMesh m(h.positions, h.triangles, 8, 8);
+    m.add_slots(1, 2);
+    m.set_owners({0, 0, 0, 1, 1, 2, 2, 0}); // spokes 5 and 6 in tile 2, the others in 0 and 1
+    const std::vector<Triangle> before = m.triangles();
+    m.group_tiles(1);
+    m.guard(true);
+    SplitMesh::work_for(0);
+    EXPECT_NO_THROW(m.position(3));
+    EXPECT_THROW(m.position(5), TileConflict);
+    const Star star = m.star(0);
+    EXPECT_THROW(m.claim(star), TileConflict);
+    EXPECT_THROW(m.split(0, star, 1, 4, Vec3(0.1, 0, 0), SplitMesh::BorderSplit::None, {7, {6, 7}}),
+                 TileConflict);
+    EXPECT_EQ(m.triangles(), before);
+    SplitMesh::work_for(1); // group 1: tiles 2 and 3
+    EXPECT_NO_THROW(m.position(6));
+    EXPECT_THROW(m.position(4), TileConflict);
+    m.guard(false);
+    m.group_tiles(0);
+    m.guard(true);
+    SplitMesh::work_for(0);
+    EXPECT_THROW(m.position(3), TileConflict); // by tiles again
+    m.guard(false);
+}
+
+// A torus of rows × columns quads, two triangles each.
+Fixture torus_grid(std::uint32_t rows, std::uint32_t columns) {
+    Fixture f;
+    for (std::uint32_t i = 0; i < rows; ++i)
+        for (std::uint32_t j = 0; j < columns; ++j) {
+            const double u = 2 * M_PI * i / rows, v = 2 * M_PI * j / columns;
+            f.positions.emplace_back((2 + std::cos(v)) * std::cos(u),
+                                     (2 + std::cos(v)) * std::sin(u), std::sin(v));
+        }
+    const auto at = [&](std::uint32_t i, std::uint32_t j) {
+        return (i % rows) * columns + j % columns;
+    };
+    for (std::uint32_t i = 0; i < rows; ++i)
+        for (std::uint32_t j = 0; j < columns; ++j) {
+            f.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            f.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    return f;
+}
+
+// The links are built by blocks of faces in parallel: the same stars for one and two threads,
+// and a face repeated far from the first block is refused on any thread.
+TEST(SplitMesh, BuiltOnSeveralThreadsTheSameAsOnOne) {
+    Fixture t = torus_grid(300, 200); // 120,000 faces: several blocks
+    const std::size_t n = t.positions.size();
+    SplitMesh one(t.positions, t.triangles, n, t.triangles.size(), Execution{1});
+    SplitMesh two(t.positions, t.triangles, n, t.triangles.size(), Execution{2});
+    const Counts c = check(two);
+    EXPECT_EQ(c.euler, 0);
+    EXPECT_EQ(c.loops, 0u);
+    for (std::uint32_t v = 0; v < n; ++v) {
+        const Star a = one.star(v), b = two.star(v);
+        ASSERT_EQ(a.neighbours, b.neighbours) << v;
+        ASSERT_EQ(a.wedges.size(), b.wedges.size());
+        for (std::size_t k = 0; k < a.wedges.size(); ++k) // the same face slot each
+            ASSERT_EQ(a.wedges[k] - &one.vcg_mesh().face[0], b.wedges[k] - &two.vcg_mesh().face[0]);
+    }
+    t.triangles.push_back(t.triangles[100000]);
+    EXPECT_THROW(SplitMesh(t.positions, t.triangles, n, t.triangles.size(), Execution{2}),
+                 std::logic_error);
 }
 
 TEST(SplitMesh, SplitsInGuardedTilesCountTheirFacesWhenTheGuardEnds) {

@@ -104,6 +104,8 @@ void add(ReexpansionStats& into, const ReexpansionStats& from) {
     into.merged_by_l_min += from.merged_by_l_min;
     into.border_splits += from.border_splits;
     into.replayed_in_tiles += from.replayed_in_tiles;
+    into.deferred_at_tile_borders += from.deferred_at_tile_borders;
+    into.late_replayed_in_groups += from.late_replayed_in_groups;
 }
 
 class Replayer {
@@ -111,12 +113,12 @@ public:
     /// Record k is replayed as the (records − 1 − k)-th: its new vertex and faces take the slots
     /// of that rank (D-43), so that splits in tiles never allocate and ids do not depend on which
     /// thread got there first; replayed in order, the ids are the ones a sequential replay gives.
-    Replayer(const ReexpansionInput& input, ReexpansionObserver* observer)
+    Replayer(const ReexpansionInput& input, const Execution& exec, ReexpansionObserver* observer)
         : points_(input.points), normals_(input.normals), records_(input.records),
           options_(input.options), l_min_(input.l_min), observer_(observer),
           mesh_(input.coarse.positions, input.coarse.triangles,
                 input.coarse.positions.size() + input.records.size(),
-                input.coarse.triangles.size() + 2 * input.records.size()),
+                input.coarse.triangles.size() + 2 * input.records.size(), exec),
           vertices_of_(input.points.size(), input.coarse.vertex_node),
           vertex_node_(input.coarse.vertex_node), first_vertex_(input.coarse.positions.size()),
           first_face_(input.coarse.triangles.size()), tiles_(input.points.size()),
@@ -168,8 +170,8 @@ public:
                 replay_in_tiles(rank, stretch, merge_short, exec, stats);
                 rank = stretch;
             } else {
-                std::uint32_t made = 0;
-                step(rank, merge_short, stats, made);
+                std::uint32_t made = 0, reached = 0;
+                step(rank, merge_short, stats, made, reached);
                 ++rank;
             }
         }
@@ -217,12 +219,16 @@ public:
 private:
     // Below this many records in a row inside tiles the threads would cost more than they save.
     static constexpr std::size_t kMinTiledStretch = 256;
+    // D-49: the second parallel round's groups hold 2^kGroupShift consecutive tiles (smaller
+    // groups saved nothing at 800k points: more of their records reach another group again).
+    static constexpr int kGroupShift = 3;
 
     enum class Outcome { Done, Conflict, ImproveLater };
     struct Late {
         std::size_t rank;
         std::uint32_t c2; ///< ImproveLater: the vertex the split made; Conflict: unused
         Outcome outcome;
+        std::uint32_t reached; ///< the tile whose vertex stopped it (its own: it waited)
     };
     struct TileLate {
         std::vector<Late> records;
@@ -235,14 +241,16 @@ private:
     }
 
     // One record as a sequential replay takes it.
-    // `made`: the vertex a split made (for flips that wait).
-    Outcome step(std::size_t rank, bool merge_short, ReexpansionStats& stats, std::uint32_t& made) {
+    // `made`: the vertex a split made (for flips that wait); `reached`: the tile whose vertex
+    // stopped it (guarded).
+    Outcome step(std::size_t rank, bool merge_short, ReexpansionStats& stats, std::uint32_t& made,
+                 std::uint32_t& reached) {
         if (merge_short && short_record(rank)) {
             alias(record(rank));
             ++stats.merged_by_l_min;
             return Outcome::Done;
         }
-        return replay(rank, stats, made);
+        return replay(rank, stats, made, reached);
     }
 
     // D-43: ranks [begin, end) all inside tiles; each tile's records in order by one thread,
@@ -288,29 +296,134 @@ private:
         for (std::size_t i = 0; i < busy.size(); ++i) {
             add(stats, tile_stats[i]);
             all.insert(all.end(), late[i].records.begin(), late[i].records.end());
-            for (std::uint32_t v : late[i].vertices) waiting_vertex_[v] = 0;
         }
-        for (const Late& l : all)
-            waiting_[record(l.rank).active] = waiting_[record(l.rank).latent] = 0;
+        release(late);
         std::sort(all.begin(), all.end(),
                   [](const Late& a, const Late& b) { return a.rank < b.rank; });
+        all = replay_late_in_groups(std::move(all), merge_short, exec, stats);
         for (const Late& l : all) {
             if (l.outcome == Outcome::Conflict) {
                 ++stats.deferred_at_tile_borders;
-                std::uint32_t made = 0;
-                step(l.rank, merge_short, stats, made);
+                std::uint32_t made = 0, reached = 0;
+                step(l.rank, merge_short, stats, made, reached);
             } else {
                 stats.improvement_flips += improve_around(mesh_, l.c2, options_);
             }
         }
     }
 
-    // Whether record r must wait: a record of its nodes or of their vertices waits, or its
-    // vertices are another tile's (it would stop there anyway).
-    bool must_wait(const CollapseRecord& r) const {
-        if (waiting_[r.active] || waiting_[r.latent]) return true;
+    // D-49: what waited at the tiles' borders (in rank order) is replayed again in parallel by
+    // groups of consecutive tiles, where most of those borders are inside a group, each group's
+    // records in rank order by one thread under the same guard; what reaches another group waits
+    // again and is returned, in rank order, for one thread.
+    std::vector<Late> replay_late_in_groups(std::vector<Late> late, bool merge_short,
+                                            const Execution& exec, ReexpansionStats& stats) {
+        const int shift = kGroupShift;
+        const std::size_t groups = ((tiles_.count - 1) >> shift) + 1;
+        if (groups < 2 || late.empty()) return late;
+        std::vector<std::vector<Late>> by_group(groups);
+        for (const Late& l : late)
+            by_group[tiles_.tile_of(record(l.rank).active) >> shift].push_back(l);
+        std::vector<std::uint32_t> busy;
+        for (std::uint32_t g = 0; g < groups; ++g)
+            if (!by_group[g].empty()) busy.push_back(g);
+        std::vector<ReexpansionStats> group_stats(busy.size());
+        std::vector<TileLate> still(busy.size());
+        mesh_.group_tiles(shift);
+        mesh_.guard(true);
+        try {
+            parallel_for(
+                without_progress(exec), busy.size(),
+                [&](std::size_t i) {
+                    replay_group(by_group[busy[i]], busy[i], merge_short, group_stats[i], still[i]);
+                },
+                1);
+        } catch (...) {
+            mesh_.guard(false);
+            mesh_.group_tiles(0);
+            throw;
+        }
+        mesh_.guard(false);
+        mesh_.group_tiles(0);
+        late.clear();
+        for (std::size_t i = 0; i < busy.size(); ++i) {
+            add(stats, group_stats[i]);
+            late.insert(late.end(), still[i].records.begin(), still[i].records.end());
+        }
+        release(still);
+        std::sort(late.begin(), late.end(),
+                  [](const Late& a, const Late& b) { return a.rank < b.rank; });
+        return late;
+    }
+
+    // A record that reached a tile of another group in the first round goes straight to the
+    // last one (it would stop there again), waiting as it would.
+    void replay_group(const std::vector<Late>& records, std::uint32_t group, bool merge_short,
+                      ReexpansionStats& stats, TileLate& late) {
+        SplitMesh::work_for(group);
+        for (const Late& l : records) {
+            const bool elsewhere = (l.reached >> kGroupShift) != group;
+            if (l.outcome == Outcome::ImproveLater) {
+                if (elsewhere || !improved_around(l.c2, stats)) late.records.push_back(l);
+                continue;
+            }
+            const CollapseRecord& r = record(l.rank);
+            Outcome outcome = Outcome::Conflict;
+            std::uint32_t made = 0, reached = l.reached;
+            if (!elsewhere && !must_wait(r, reached))
+                outcome = step(l.rank, merge_short, stats, made, reached);
+            if (outcome == Outcome::Conflict) {
+                wait(r, late);
+                late.records.push_back({l.rank, made, outcome, reached});
+                continue;
+            }
+            ++stats.deferred_at_tile_borders;
+            ++stats.late_replayed_in_groups;
+            if (outcome == Outcome::ImproveLater)
+                late.records.push_back({l.rank, made, outcome, reached});
+        }
+    }
+
+    // The local flips around c2 that waited, made; false if they reach another group.
+    bool improved_around(std::uint32_t c2, ReexpansionStats& stats) {
+        try {
+            stats.improvement_flips += improve_around(mesh_, c2, options_);
+            return true;
+        } catch (const TileConflict&) {
+            return false;
+        }
+    }
+
+    // Record r waits: so does every later record of its nodes or of their vertices.
+    void wait(const CollapseRecord& r, TileLate& late) {
+        waiting_[r.active] = waiting_[r.latent] = 1;
         for (std::uint32_t v : vertices_of_.of(r.active))
-            if (!mesh_.owns(v) || waiting_vertex_[v]) return true;
+            if (mesh_.owns(v)) {
+                waiting_vertex_[v] = 1;
+                late.vertices.push_back(v);
+            }
+    }
+
+    // The marks of the records that waited, cleared.
+    void release(const std::vector<TileLate>& late) {
+        for (const TileLate& l : late) {
+            for (std::uint32_t v : l.vertices) waiting_vertex_[v] = 0;
+            for (const Late& w : l.records)
+                waiting_[record(w.rank).active] = waiting_[record(w.rank).latent] = 0;
+        }
+    }
+
+    // Whether record r must wait: a record of its nodes or of their vertices waits, or its
+    // vertices are another tile's (it would stop there anyway: `reached` says whose).
+    bool must_wait(const CollapseRecord& r, std::uint32_t& reached) const {
+        if (waiting_[r.active] || waiting_[r.latent]) return true;
+        for (std::uint32_t v : vertices_of_.of(r.active)) {
+            if (!mesh_.owns(v)) {
+                reached = mesh_.owner(v);
+                return true;
+            }
+            if (waiting_vertex_[v]) return true;
+        }
         return false;
     }
 
@@ -320,25 +433,19 @@ private:
         for (std::uint32_t rank : ranks) {
             const CollapseRecord& r = record(rank);
             Outcome outcome = Outcome::Conflict;
-            std::uint32_t made = 0;
-            if (!must_wait(r)) outcome = step(rank, merge_short, stats, made);
+            std::uint32_t made = 0, reached = tile;
+            if (!must_wait(r, reached)) outcome = step(rank, merge_short, stats, made, reached);
             if (outcome == Outcome::Done) {
                 ++stats.replayed_in_tiles;
                 continue;
             }
-            if (outcome == Outcome::Conflict) {
-                waiting_[r.active] = waiting_[r.latent] = 1;
-                for (std::uint32_t v : vertices_of_.of(r.active))
-                    if (mesh_.owns(v)) {
-                        waiting_vertex_[v] = 1;
-                        late.vertices.push_back(v);
-                    }
-            }
-            late.records.push_back({rank, made, outcome});
+            if (outcome == Outcome::Conflict) wait(r, late);
+            late.records.push_back({rank, made, outcome, reached});
         }
     }
 
-    Outcome replay(std::size_t rank, ReexpansionStats& stats, std::uint32_t& made) {
+    Outcome replay(std::size_t rank, ReexpansionStats& stats, std::uint32_t& made,
+                   std::uint32_t& reached) {
         const CollapseRecord& r = record(rank);
         // Stays valid while r.latent's entry changes: that is another word or list.
         const NodeVertices::Span candidates = vertices_of_.of(r.active);
@@ -372,7 +479,8 @@ private:
                                  {std::uint32_t(first_vertex_ + rank), {face, face + 1}});
                 break;
             }
-        } catch (const TileConflict&) {
+        } catch (const TileConflict& conflict) {
+            reached = conflict.tile;
             return Outcome::Conflict;
         }
         if (!choice.found) {
@@ -390,7 +498,8 @@ private:
         Outcome outcome = Outcome::Done;
         try {
             stats.improvement_flips += improve_around(mesh_, c2, options_);
-        } catch (const TileConflict&) {
+        } catch (const TileConflict& conflict) {
+            reached = conflict.tile;
             outcome = Outcome::ImproveLater; // the split stands; its flips wait
         }
         if (observer_) { // one thread (replay_collapses): the observer may read the whole mesh
@@ -426,7 +535,7 @@ ReexpandedMesh replay_collapses(ReexpansionInput input, const Execution& exec,
     const ReexpandOptions& options = input.options;
     validate(options);
     stats.records = input.records.size();
-    Replayer replayer(input, observer);
+    Replayer replayer(input, without_progress(exec), observer);
     stats.border_slivers_peeled = replayer.peel_border_slivers();
     stats.tiles = collapsing::Tiles(input.points.size()).count;
     stats.tile_times.tiles = stats.tiles;

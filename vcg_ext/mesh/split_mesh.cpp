@@ -96,7 +96,8 @@ void SplitMesh::check_around(std::uint32_t vi, const char* after) const {
 }
 
 SplitMesh::SplitMesh(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
-                     std::size_t vertex_capacity, std::size_t face_capacity) {
+                     std::size_t vertex_capacity, std::size_t face_capacity,
+                     const Execution& exec) {
     // Reserved once: Allocator::Add* then never reallocates, so no pointer ever moves.
     mesh_.vert.reserve(std::max(vertex_capacity, positions.size()));
     mesh_.face.reserve(std::max(face_capacity, triangles.size()));
@@ -107,12 +108,24 @@ SplitMesh::SplitMesh(const std::vector<Vec3>& positions, const std::vector<Trian
         for (int k = 0; k < 3; ++k) f->V(k) = &mesh_.vert[t[k]];
         ++f;
     }
-    link_faces(positions.size(), triangles);
+    // Each face writes only its own links and each vertex only its own face: by blocks, the
+    // same mesh for any thread count.
+    const Execution quiet = without_progress(exec);
+    const VertexCorners at = corners_by_vertex(positions.size(), triangles, quiet);
+    link_faces(at, quiet);
     face_of_.assign(mesh_.vert.capacity(), nullptr);
-    for (SFace& face : mesh_.face) set_face_of(&face);
+    parallel_for_blocks(quiet, positions.size(), kCheapBlock,
+                        [&](std::size_t, std::size_t first, std::size_t end) {
+                            for (auto p = std::uint32_t(first); p < end; ++p)
+                                if (at.end(p) > at.begin(p)) // the last face in slot order
+                                    face_of_[p] = &mesh_.face[at.corner[at.end(p) - 1] / 3];
+                        });
     // A wrongly wound or asymmetric input would corrupt every later split: refuse it (O(F)).
-    for (const SFace& face : mesh_.face)
-        if (!face_consistent(&face)) throw_not_manifold();
+    parallel_for_blocks(quiet, mesh_.face.size(), kCheapBlock,
+                        [&](std::size_t, std::size_t first, std::size_t end) {
+                            for (std::size_t fi = first; fi < end; ++fi)
+                                if (!face_consistent(&mesh_.face[fi])) throw_not_manifold();
+                        });
 #ifdef HRSR_EXPENSIVE_CHECKS
     for (std::uint32_t p = 0; p < positions.size(); ++p) check_around(p, "building the mesh");
 #endif
@@ -121,26 +134,28 @@ SplitMesh::SplitMesh(const std::vector<Vec3>& positions, const std::vector<Trian
 // Face-face adjacency from per-vertex face lists: a few times faster and several times leaner
 // than vcglib's UpdateTopology::FaceFace, which sorts every edge. An edge with more than two
 // faces, or two faces running along it the same way, is refused.
-void SplitMesh::link_faces(std::size_t vertex_count, const std::vector<Triangle>& triangles) {
-    const VertexCorners at = corners_by_vertex(vertex_count, triangles); // faces in slot order
-    for (std::uint32_t fi = 0; fi < mesh_.face.size(); ++fi) {
-        SFace& f = mesh_.face[fi];
-        for (int z = 0; z < 3; ++z) {
-            const SVertex *a = f.cV(z), *b = f.cV((z + 1) % 3);
-            f.FFp(z) = &f; // a border unless a face across is found
-            f.FFi(z) = char(z);
-            int found = 0;
-            for (std::uint32_t e = at.begin(index(a)); e < at.end(index(a)); ++e) {
-                SFace& g = mesh_.face[at.corner[e] / 3];
-                if (&g == &f) continue;
-                const int j = corner_of(&g, b);
-                if (j < 0) continue;
-                if (++found > 1 || g.cV((j + 1) % 3) != a) throw_not_manifold();
-                f.FFp(z) = &g;
-                f.FFi(z) = char(j);
+void SplitMesh::link_faces(const VertexCorners& at, const Execution& exec) {
+    parallel_for_blocks(
+        exec, mesh_.face.size(), kCheapBlock, [&](std::size_t, std::size_t first, std::size_t end) {
+            for (std::size_t fi = first; fi < end; ++fi) {
+                SFace& f = mesh_.face[fi];
+                for (int z = 0; z < 3; ++z) {
+                    const SVertex *a = f.cV(z), *b = f.cV((z + 1) % 3);
+                    f.FFp(z) = &f; // a border unless a face across is found
+                    f.FFi(z) = char(z);
+                    int found = 0;
+                    for (std::uint32_t e = at.begin(index(a)); e < at.end(index(a)); ++e) {
+                        SFace& g = mesh_.face[at.corner[e] / 3];
+                        if (&g == &f) continue;
+                        const int j = corner_of(&g, b);
+                        if (j < 0) continue;
+                        if (++found > 1 || g.cV((j + 1) % 3) != a) throw_not_manifold();
+                        f.FFp(z) = &g;
+                        f.FFi(z) = char(j);
+                    }
+                }
             }
-        }
-    }
+        });
 }
 
 void SplitMesh::throw_not_manifold() {

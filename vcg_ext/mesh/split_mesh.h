@@ -38,14 +38,16 @@ struct Star {
 
 /// D-43: what a guarded mesh throws when work for one tile reaches a vertex of another, before
 /// anything is changed.
-struct TileConflict {};
+struct TileConflict {
+    std::uint32_t tile; ///< the tile of the vertex reached
+};
 
 class SplitMesh {
 public:
     /// A manifold, consistently oriented mesh; room for `vertex_capacity` vertices and
-    /// `face_capacity` faces in total.
+    /// `face_capacity` faces in total. Its links are built on `exec`'s threads.
     SplitMesh(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
-              std::size_t vertex_capacity, std::size_t face_capacity);
+              std::size_t vertex_capacity, std::size_t face_capacity, const Execution& exec = {});
     SplitMesh(const SplitMesh&) = delete;
     SplitMesh& operator=(const SplitMesh&) = delete;
 
@@ -76,11 +78,17 @@ public:
     /// Between guarded stretches the caller must join its threads.
     void guard(bool on);
     bool guarded() const { return guarded_; }
+    /// Work by groups of 2^shift consecutive tiles (group = tile >> shift; 0: by tiles). Set
+    /// between guarded stretches only.
+    void group_tiles(int shift) { group_shift_ = shift; }
     static void work_for(std::uint32_t tile) { working_tile_ = tile; }
     /// Whether the current thread may touch v (always, unguarded).
-    bool owns(std::uint32_t v) const { return !guarded_ || owner_[v] == working_tile_; }
+    std::uint32_t owner(std::uint32_t v) const { return owner_[v]; }
+    bool owns(std::uint32_t v) const {
+        return !guarded_ || (owner_[v] >> group_shift_) == working_tile_;
+    }
     void claim(std::uint32_t v) const {
-        if (!owns(v)) throw TileConflict{};
+        if (!owns(v)) throw TileConflict{owner_[v]};
     }
     /// Claims a star's neighbours (its centre was claimed by star()).
     void claim(const Star& s) const {
@@ -167,7 +175,7 @@ public:
     const SMesh& vcg_mesh() const { return mesh_; }
 
 private:
-    void link_faces(std::size_t vertex_count, const std::vector<Triangle>& triangles);
+    void link_faces(const VertexCorners& at, const Execution& exec);
     [[noreturn]] static void throw_not_manifold();
     void set_face_of(SFace* f);
     /// c' and the faces for (c', c, b) and (c, c', a): the same face when one is made.
@@ -195,6 +203,7 @@ private:
     std::vector<SFace*> face_of_;      ///< per vertex: one incident face (null if isolated)
     std::vector<std::uint32_t> owner_; ///< per vertex slot: its tile (D-43)
     bool guarded_ = false;
+    int group_shift_ = 0; ///< working_tile_ names a group of 2^group_shift_ tiles
     std::atomic<long> guarded_face_change_{0};
     inline static thread_local std::uint32_t working_tile_ = 0;
 };
