@@ -218,6 +218,9 @@ Reconstruction tiled_torus_run(const PointSet& s, int threads, const Check& chec
     EXPECT_EQ(report.mesh.components.size(), 1u);
     for (const auto& component : report.mesh.components) EXPECT_EQ(component.genus(), 1);
     EXPECT_GE(report.vertex_reference_ratio, 0.999);
+    // Every record replayed once, whichever round took it (D-43, D-49).
+    const ReexpansionStats& e = report.reexpansion;
+    EXPECT_EQ(e.replayed + e.failed_no_pair + e.skipped_no_vertex + e.merged_by_l_min, e.records);
     check(report);
     return r;
 }
@@ -258,6 +261,8 @@ TEST(Hrsr, TileGroupsGiveTheSameMeshForAnyThreadCount) {
     auto run = [&](int threads) {
         return tiled_torus_run(s, threads, [](const ReconstructionReport& report) {
             EXPECT_EQ(report.reexpansion.tiles, 10u);
+            // By tiles still between the groups' rounds (the grouping is undone after each).
+            EXPECT_GT(report.reexpansion.replayed_in_tiles, report.reexpansion.records / 2);
             EXPECT_GT(2 * report.reexpansion.late_replayed_in_groups,
                       report.reexpansion.deferred_at_tile_borders);
             EXPECT_LT(report.reexpansion.late_replayed_in_groups,

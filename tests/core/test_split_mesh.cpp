@@ -275,6 +275,12 @@ TEST(SplitMesh, GuardByGroupsOfTilesLetsAThreadWorkOnEveryTileOfItsGroup) {
     SplitMesh::work_for(0);
     EXPECT_NO_THROW(m.position(3));
     EXPECT_THROW(m.position(5), TileConflict);
+    try { // the conflict names the tile reached, not its group
+        m.position(6);
+        ADD_FAILURE() << "vertex 6 is tile 2's";
+    } catch (const TileConflict& conflict) {
+        EXPECT_EQ(conflict.tile, 2u);
+    }
     const Star star = m.star(0);
     EXPECT_THROW(m.claim(star), TileConflict);
     EXPECT_THROW(m.split(0, star, 1, 4, Vec3(0.1, 0, 0), SplitMesh::BorderSplit::None, {7, {6, 7}}),

@@ -12,8 +12,10 @@ namespace {
 
 class FlatFaces {
 public:
-    FlatFaces(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles)
-        : positions_(positions), mesh_(positions, triangles, positions.size(), triangles.size()) {}
+    FlatFaces(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
+              const Execution& exec)
+        : positions_(positions),
+          mesh_(positions, triangles, positions.size(), triangles.size(), exec) {}
 
     // Clears f if it can; false leaves it as it is.
     bool clear(SFace* f, FlatFaceStats& stats) {
@@ -101,7 +103,7 @@ FlatFaceStats clear_flat_faces(const std::vector<Vec3>& positions, std::vector<T
     // as they are (counted as left) rather than the reconstruction failing here.
     std::optional<FlatFaces> built;
     try {
-        built.emplace(positions, triangles);
+        built.emplace(positions, triangles, without_progress(exec));
     } catch (const std::logic_error&) {
         stats.left = stats.found;
         return stats;

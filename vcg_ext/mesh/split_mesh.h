@@ -47,7 +47,8 @@ public:
     /// A manifold, consistently oriented mesh; room for `vertex_capacity` vertices and
     /// `face_capacity` faces in total. Its links are built on `exec`'s threads.
     SplitMesh(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
-              std::size_t vertex_capacity, std::size_t face_capacity, const Execution& exec = {});
+              std::size_t vertex_capacity, std::size_t face_capacity,
+              const Execution& exec = Execution{1, nullptr});
     SplitMesh(const SplitMesh&) = delete;
     SplitMesh& operator=(const SplitMesh&) = delete;
 
