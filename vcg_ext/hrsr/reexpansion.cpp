@@ -276,8 +276,8 @@ private:
             return true;
         });
         const Execution threads{exec.threads, exec.progress ? &stretch : nullptr};
-        mesh_.guard(true);
-        try {
+        {
+            const GuardedScope guarded(mesh_, 0);
             parallel_for(
                 threads, busy.size(),
                 [&](std::size_t i) {
@@ -286,21 +286,10 @@ private:
                     });
                 },
                 1);
-        } catch (...) {
-            mesh_.guard(false);
-            throw;
         }
-        mesh_.guard(false);
         stats.tile_times.add_stretch(seconds.data(), busy.size());
-        std::vector<Late> all;
-        for (std::size_t i = 0; i < busy.size(); ++i) {
-            add(stats, tile_stats[i]);
-            all.insert(all.end(), late[i].records.begin(), late[i].records.end());
-        }
-        release(late);
-        std::sort(all.begin(), all.end(),
-                  [](const Late& a, const Late& b) { return a.rank < b.rank; });
-        all = replay_late_in_groups(std::move(all), merge_short, exec, stats);
+        std::vector<Late> all =
+            replay_late_in_groups(gathered(tile_stats, late, stats), merge_short, exec, stats);
         for (const Late& l : all) {
             if (l.outcome == Outcome::Conflict) {
                 ++stats.deferred_at_tile_borders;
@@ -318,42 +307,60 @@ private:
     // again and is returned, in rank order, for one thread.
     std::vector<Late> replay_late_in_groups(std::vector<Late> late, bool merge_short,
                                             const Execution& exec, ReexpansionStats& stats) {
-        const int shift = kGroupShift;
-        const std::size_t groups = ((tiles_.count - 1) >> shift) + 1;
+        const std::size_t groups = ((tiles_.count - 1) >> kGroupShift) + 1;
         if (groups < 2 || late.empty()) return late;
         std::vector<std::vector<Late>> by_group(groups);
         for (const Late& l : late)
-            by_group[tiles_.tile_of(record(l.rank).active) >> shift].push_back(l);
+            by_group[tiles_.tile_of(record(l.rank).active) >> kGroupShift].push_back(l);
         std::vector<std::uint32_t> busy;
         for (std::uint32_t g = 0; g < groups; ++g)
             if (!by_group[g].empty()) busy.push_back(g);
         std::vector<ReexpansionStats> group_stats(busy.size());
         std::vector<TileLate> still(busy.size());
-        mesh_.group_tiles(shift);
-        mesh_.guard(true);
-        try {
+        {
+            const GuardedScope guarded(mesh_, kGroupShift);
             parallel_for(
                 without_progress(exec), busy.size(),
                 [&](std::size_t i) {
                     replay_group(by_group[busy[i]], busy[i], merge_short, group_stats[i], still[i]);
                 },
                 1);
-        } catch (...) {
+        }
+        return gathered(group_stats, still, stats);
+    }
+
+    // The mesh guarded for one parallel round, a thread's share being its tile (shift 0) or its
+    // group of 2^shift tiles; unguarded again however the round ends.
+    class GuardedScope {
+    public:
+        GuardedScope(SplitMesh& mesh, int shift) : mesh_(mesh) {
+            mesh_.group_tiles(shift);
+            mesh_.guard(true);
+        }
+        ~GuardedScope() {
             mesh_.guard(false);
             mesh_.group_tiles(0);
-            throw;
         }
-        mesh_.guard(false);
-        mesh_.group_tiles(0);
-        late.clear();
-        for (std::size_t i = 0; i < busy.size(); ++i) {
-            add(stats, group_stats[i]);
-            late.insert(late.end(), still[i].records.begin(), still[i].records.end());
+        GuardedScope(const GuardedScope&) = delete;
+        GuardedScope& operator=(const GuardedScope&) = delete;
+
+    private:
+        SplitMesh& mesh_;
+    };
+
+    // After a parallel round: the workers' stats added to `stats`, their waiting marks cleared,
+    // and what waited, in rank order.
+    std::vector<Late> gathered(const std::vector<ReexpansionStats>& worker_stats,
+                               const std::vector<TileLate>& late, ReexpansionStats& stats) {
+        std::vector<Late> all;
+        for (std::size_t i = 0; i < worker_stats.size(); ++i) {
+            add(stats, worker_stats[i]);
+            all.insert(all.end(), late[i].records.begin(), late[i].records.end());
         }
-        release(still);
-        std::sort(late.begin(), late.end(),
+        release(late);
+        std::sort(all.begin(), all.end(),
                   [](const Late& a, const Late& b) { return a.rank < b.rank; });
-        return late;
+        return all;
     }
 
     // A record that reached a tile of another group in the first round goes straight to the
