@@ -3,6 +3,7 @@
 #include <vcg/space/index/kdtree/kdtree.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <new>
 
@@ -13,10 +14,17 @@ namespace hrsr {
 // session 22).
 constexpr unsigned kPointsPerLeaf = 32;
 
+// vcglib's tree, and which point each of its slots holds (mIndices: protected, with the same
+// name and meaning in the vcglib of MeshLab 2020.09, 2022.02 and 2025.07).
+struct KdTreeWithSlots : vcg::KdTree<double> {
+    using vcg::KdTree<double>::KdTree;
+    const std::vector<unsigned int>& slot_points() const { return mIndices; }
+};
+
 struct KnnIndex::Tree {
     explicit Tree(const std::vector<Vec3>& points)
         : kd(vcg::ConstDataWrapper<Vec3>(points.data(), int(points.size())), kPointsPerLeaf) {}
-    vcg::KdTree<double> kd;
+    KdTreeWithSlots kd;
 };
 
 KnnIndex::KnnIndex(const std::vector<Vec3>& points) : points_(points), size_(points.size()) {
@@ -107,31 +115,30 @@ void KnnIndex::neighbours_of(std::uint32_t i, int k, std::vector<Neighbour>& out
     if (out.size() > std::size_t(wanted)) out.resize(std::size_t(wanted));
 }
 
-bool KnnIndex::at_least(const Vec3& p, double radius, std::size_t count,
-                        const std::function<bool(double)>& accept) const {
-    if (count == 0) return true;
-    if (!tree_) return false;
-    const auto& nodes = tree_->kd._getNodes();
-    const auto& points = tree_->kd._getPoints();
-    const double squared_radius = radius * radius;
-    // Depth first, the side of each split holding p first; a cell is entered only when its
-    // split plane is within `radius` (as vcg's own queries prune, but in double).
+namespace {
+// Calls visit(slot, squared distance) for every point of the tree within sqrt(squared_radius)
+// of p, until visit returns true (then true). Depth first, the side of each split holding p
+// first; a cell is entered only when its split plane is within the radius (as vcg's own queries
+// prune, but in double).
+template <class Visit>
+bool visit_within(KdTreeWithSlots& kd, const Vec3& p, double squared_radius, Visit&& visit) {
+    const auto& nodes = kd._getNodes();
+    const auto& points = kd._getPoints();
     struct Cell {
         unsigned node;
         double squared_plane_distance;
     };
     thread_local std::vector<Cell> stack;
     stack.assign(1, {0U, 0.0});
-    std::size_t found = 0;
     while (!stack.empty()) {
         const Cell cell = stack.back();
         stack.pop_back();
         if (cell.squared_plane_distance > squared_radius) continue;
         const auto& node = nodes[cell.node];
         if (node.leaf) {
-            for (unsigned i = node.start, end = node.start + node.size; i < end; ++i) {
-                const double squared = vcg::SquaredNorm(p - points[i]);
-                if (squared <= squared_radius && accept(squared) && ++found == count) return true;
+            for (unsigned e = node.start, end = node.start + node.size; e < end; ++e) {
+                const double squared = vcg::SquaredNorm(p - points[e]);
+                if (squared <= squared_radius && visit(e, squared)) return true;
             }
             continue;
         }
@@ -141,6 +148,42 @@ bool KnnIndex::at_least(const Vec3& p, double radius, std::size_t count,
         stack.push_back({offset < 0 ? below : above, cell.squared_plane_distance});
     }
     return false;
+}
+} // namespace
+
+bool KnnIndex::at_least(const Vec3& p, double radius, std::size_t count,
+                        const std::function<bool(double)>& accept) const {
+    if (count == 0) return true;
+    if (!tree_) return false;
+    std::size_t found = 0;
+    return visit_within(tree_->kd, p, radius * radius, [&](unsigned, double squared) {
+        return accept(squared) && ++found == count;
+    });
+}
+
+bool KnnIndex::neighbours_within(std::uint32_t i, double radius, int k,
+                                 std::vector<Neighbour>& out) const {
+    out.clear();
+    if (!tree_) return k <= 0;
+    const auto& slot_points = tree_->kd.slot_points();
+    visit_within(tree_->kd, points_[i], radius * radius, [&](unsigned slot, double squared) {
+        if (slot_points[slot] != i) out.push_back({slot_points[slot], squared});
+        return false;
+    });
+    if (out.size() < std::size_t(std::max(k, 0))) return false;
+    if (out.size() > std::size_t(k)) {
+        std::nth_element(out.begin(), out.begin() + k, out.end(), closer);
+        // A tie at the k-th distance: vcglib's query would keep whichever of the tied points
+        // its walk met first, this one the smallest indices. Left to that query, so that the
+        // set is always the one neighbours_of() gives (the torus model's regular grid, RsR:
+        // closed with vcglib's choice, a 10-edge hole with the other).
+        double kth = 0;
+        for (int e = 0; e < k; ++e) kth = std::max(kth, out[std::size_t(e)].squared_distance);
+        if (out[std::size_t(k)].squared_distance == kth) return false;
+        out.resize(std::size_t(k));
+    }
+    sort_neighbours(out);
+    return true;
 }
 
 void KnnIndex::within(const Vec3& p, double radius, std::vector<std::uint32_t>& out) const {
@@ -152,6 +195,98 @@ void KnnIndex::within(const Vec3& p, double radius, std::vector<std::uint32_t>& 
     squared.clear();
     tree_->kd.doQueryDist(p, float(radius), indices, squared);
     out.assign(indices.begin(), indices.end());
+}
+
+// A relative margin on a kept radius for the rounding of distances recomputed and squared again.
+constexpr double kRadiusMargin = 1e-9;
+
+namespace {
+// A radius kept in float (half the memory) never below the double it stands for.
+float rounded_up(double r) {
+    const auto f = float(r);
+    return double(f) >= r ? f : std::nextafter(f, HUGE_VALF);
+}
+} // namespace
+
+void NeighbourReach::begin_round(std::size_t points, int k) {
+    if (k == k_ && radius_.size() == points) return;
+    k_ = k;
+    radius_.assign(points, 0.0f);
+}
+
+void NeighbourReach::neighbours(const KnnIndex& index, std::uint32_t i,
+                                std::vector<Neighbour>& out) {
+    const double radius = radius_[i];
+    if (!(radius > 0 && index.neighbours_within(i, radius * (1 + kRadiusMargin), k_, out)))
+        index.neighbours_of(i, k_, out);
+    double farthest = 0;
+    for (const Neighbour& n : out) farthest = std::max(farthest, n.squared_distance);
+    radius_[i] = rounded_up(std::sqrt(farthest));
+}
+
+void NeighbourReach::moved(const std::vector<Vec3>& before, const std::vector<double>& shift,
+                           const Execution& exec) {
+    const std::size_t n = std::min(radius_.size(), before.size());
+    if (n == 0) return;
+    // The grid: cells about the mean radius, at most kMaxCellsPerAxis a side.
+    Vec3 lo = before[0], hi = before[0];
+    double radius_sum = 0;
+    std::size_t known = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], before[i][a]);
+            hi[a] = std::max(hi[a], before[i][a]);
+        }
+        if (radius_[i] > 0) {
+            radius_sum += radius_[i];
+            ++known;
+        }
+    }
+    if (known == 0) return;
+    const Vec3 extent = hi - lo;
+    const double largest = std::max({extent[0], extent[1], extent[2]});
+    const double cell = std::max(radius_sum / double(known), largest / kMaxCellsPerAxis);
+    std::size_t cells[3];
+    for (int a = 0; a < 3; ++a) cells[a] = std::size_t(extent[a] / cell) + 1;
+    const auto coordinate = [&](double x, int a) {
+        return std::min(cells[a] - 1, std::size_t(std::max(0.0, (x - lo[a]) / cell)));
+    };
+    std::vector<float> largest_shift(cells[0] * cells[1] * cells[2], 0.0f);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t c =
+            (coordinate(before[i][0], 0) * cells[1] + coordinate(before[i][1], 1)) * cells[2] +
+            coordinate(before[i][2], 2);
+        // Rounded up to float, so that the bound never shrinks.
+        const float s = std::nextafter(float(std::abs(shift[i])), HUGE_VALF);
+        largest_shift[c] = std::max(largest_shift[c], s);
+    }
+    parallel_for_blocks(exec, n, kCheapBlock, [&](std::size_t, std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            const double r = radius_[i];
+            if (!(r > 0)) continue;
+            // The ball holds point i's k nearest; widened for the rounding of its box.
+            const double reach = r * (1 + 1e-6) + 1e-12 * (1 + largest);
+            std::size_t from[3], to[3];
+            bool wide = false; // a radius far above the mean: its query as it comes
+            for (int a = 0; a < 3; ++a) {
+                from[a] = coordinate(before[i][a] - reach, a);
+                to[a] = coordinate(before[i][a] + reach, a);
+                wide = wide || to[a] - from[a] > kMaxCellsAcrossBall;
+            }
+            if (wide) {
+                radius_[i] = 0.0f;
+                continue;
+            }
+            double near = 0;
+            for (std::size_t x = from[0]; x <= to[0]; ++x)
+                for (std::size_t y = from[1]; y <= to[1]; ++y)
+                    for (std::size_t z = from[2]; z <= to[2]; ++z)
+                        near = std::max(near,
+                                        double(largest_shift[(x * cells[1] + y) * cells[2] + z]));
+            const double grown = r + std::abs(shift[i]) + near;
+            radius_[i] = grown <= kMaxGrowth * r ? rounded_up(grown) : 0.0f;
+        }
+    });
 }
 
 void reserve_room_for_union(std::vector<std::uint32_t>& buffer, std::size_t entries) {

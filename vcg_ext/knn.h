@@ -5,6 +5,7 @@
 #include "parallel.h"
 #include "point_set.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -45,6 +46,13 @@ public:
     /// points lie within `radius`. Thread-safe.
     bool at_least(const Vec3& p, double radius, std::size_t count,
                   const std::function<bool(double)>& accept) const;
+    /// neighbours_of(i, k) when at least k others lie within `radius` of point i: every point
+    /// within the radius gathered (no bounded queue to keep), the k nearest kept and sorted.
+    /// False, and `out` unspecified, when fewer than k lie there or the k-th and the next are
+    /// equally far (which of them neighbours_of() keeps, only vcglib's walk of the tree
+    /// decides). Thread-safe.
+    bool neighbours_within(std::uint32_t i, double radius, int k,
+                           std::vector<Neighbour>& out) const;
     /// Every data point within `radius` of p, in no particular order. `out` is overwritten.
     void within(const Vec3& p, double radius, std::vector<std::uint32_t>& out) const;
 
@@ -53,6 +61,44 @@ private:
     std::unique_ptr<Tree> tree_;
     const std::vector<Vec3>& points_;
     std::size_t size_ = 0;
+};
+
+/// What the k-nearest queries of a cloud's own points found, kept for the next round that asks
+/// the same of the same points, or of them moved a little (the smoothing rounds and the PCA
+/// between them, §4.4): per point a distance within which at least k others lie. A radius query
+/// then finds the k nearest without vcglib's bounded queue: about three times cheaper at
+/// k = 192 (docs/BENCHMARKS.md, session 35). The set is always the k-nearest query's (a tie at
+/// the k-th distance goes to that query).
+class NeighbourReach {
+public:
+    /// Before a round over `points` points asking k of each: the radii are kept when the last
+    /// round asked the same (else forgotten).
+    void begin_round(std::size_t points, int k);
+    /// The round's k nearest others of point i of `index`'s points, as KnnIndex::neighbours_of
+    /// gives them: by radius where one is known, else by that query; the k-th distance found is
+    /// kept for the next round. Thread-safe for distinct i.
+    void neighbours(const KnnIndex& index, std::uint32_t i, std::vector<Neighbour>& out);
+    /// The points moved from `before`, point i by at most |shift[i]| (the next rounds read a
+    /// kd-tree of the new positions): a radius grows by its own point's shift and the largest
+    /// shift near it (triangle inequality: its k nearest stay within that), and is forgotten
+    /// where that makes it more than kMaxGrowth times the k-th distance (a wide radius gathers
+    /// more points than the k-nearest query visits).
+    void moved(const std::vector<Vec3>& before, const std::vector<double>& shift,
+               const Execution& exec);
+    /// Points whose next query goes by radius.
+    std::size_t radii_known() const {
+        return std::size_t(
+            std::count_if(radius_.begin(), radius_.end(), [](float r) { return r > 0; }));
+    }
+
+private:
+    static constexpr double kMaxGrowth = 1.2;
+    /// "Near": the cells of a grid of at most kMaxCellsPerAxis³ cells about a radius wide
+    /// (16 MB of floats) that the ball of a radius overlaps.
+    static constexpr double kMaxCellsPerAxis = 160;
+    static constexpr std::size_t kMaxCellsAcrossBall = 6;
+    int k_ = 0;
+    std::vector<float> radius_; ///< per point, rounded up; 0: unknown
 };
 
 /// An entry of a KnnTable whose point is no longer in the cloud (dropped after the query).

@@ -144,6 +144,117 @@ TEST(Knn, AtLeastDecidesAsTheSortedNeighboursDo) {
     EXPECT_TRUE(KnnIndex(none).at_least(Vec3(0, 0, 0), 1, 0, [](double) { return true; }));
 }
 
+std::set<std::uint32_t> indices_of(const std::vector<Neighbour>& found) {
+    std::set<std::uint32_t> ids;
+    for (const Neighbour& n : found) ids.insert(n.index);
+    return ids;
+}
+
+// A grid (ties at every distance) with more exact duplicates of one point than k, beside a random
+// sphere.
+std::vector<Vec3> grid_duplicates_and_sphere() {
+    std::vector<Vec3> points;
+    for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 8; ++j) points.emplace_back(i, j, 0);
+    for (int d = 0; d < 12; ++d) points.emplace_back(3, 3, 0);
+    for (const Vec3& p : testing::sample_sphere(600).positions)
+        points.push_back(p * 3.0 + Vec3(20, 0, 0));
+    return points;
+}
+
+TEST(Knn, WithinARadiusAreTheKNearestUnlessTiedAtTheKth) {
+    const std::vector<Vec3> points = grid_duplicates_and_sphere();
+    const KnnIndex index(points);
+    std::vector<Neighbour> all, within, nearest;
+    int short_radius = 0, tied = 0, found = 0;
+    for (std::uint32_t q = 0; q < points.size(); q += 5) {
+        index.neighbours_of(q, int(points.size()), all); // every other point, sorted
+        for (const int k : {1, 6, 20}) {
+            const double kth = std::sqrt(all[std::size_t(k) - 1].squared_distance);
+            const bool tie =
+                all[std::size_t(k)].squared_distance == all[std::size_t(k) - 1].squared_distance;
+            const bool answered = index.neighbours_within(q, kth * (1 + 1e-9) + 1e-12, k, within);
+            EXPECT_EQ(answered, !tie) << "point " << q << " k " << k;
+            (tie ? tied : found)++;
+            if (!answered) continue;
+            index.neighbours_of(q, k, nearest);
+            ASSERT_EQ(within.size(), nearest.size());
+            for (std::size_t e = 0; e < within.size(); ++e) { // the same, in the same order
+                EXPECT_EQ(within[e].index, nearest[e].index) << "point " << q << " k " << k;
+                EXPECT_EQ(within[e].squared_distance, nearest[e].squared_distance);
+            }
+            // Fewer than k strictly nearer than the k-th: a radius short of it finds too few.
+            const std::size_t nearer =
+                std::size_t(std::count_if(all.begin(), all.end(), [&](const Neighbour& n) {
+                    return n.squared_distance < all[std::size_t(k) - 1].squared_distance;
+                }));
+            if (kth > 0 && nearer < std::size_t(k)) {
+                EXPECT_FALSE(index.neighbours_within(q, kth * (1 - 1e-6), k, within));
+                ++short_radius;
+            }
+        }
+    }
+    EXPECT_GT(short_radius, 100);
+    EXPECT_GT(tied, 20); // the grid's
+    EXPECT_GT(found, 300);
+}
+
+// The rounds of §4.4: the same k asked of the same points, then of the points moved along
+// normals. Whether by radius or by the k-nearest query, each round's are the moved points' own
+// k nearest (a random cloud: no ties).
+TEST(NeighbourReach, EveryRoundFindsTheKNearestOfThePointsAsTheyStand) {
+    const PointSet sphere = testing::sample_sphere(3000);
+    std::vector<Vec3> points = sphere.positions;
+    const int k = 24;
+    NeighbourReach reach;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> small(-0.002, 0.002); // spacing about 0.065
+    std::vector<Neighbour> by_reach, by_query;
+    const auto round = [&](const std::vector<Vec3>& at) {
+        const KnnIndex index(at);
+        reach.begin_round(at.size(), k);
+        for (std::uint32_t i = 0; i < at.size(); ++i) {
+            reach.neighbours(index, i, by_reach);
+            index.neighbours_of(i, k, by_query);
+            ASSERT_EQ(by_reach.size(), by_query.size()) << "point " << i;
+            for (std::size_t e = 0; e < by_reach.size(); ++e)
+                ASSERT_EQ(by_reach[e].index, by_query[e].index) << "point " << i;
+        }
+    };
+    round(points);
+    EXPECT_EQ(reach.radii_known(), points.size());
+    round(points); // the same points again: every query by radius
+    for (int moves = 0; moves < 2; ++moves) {
+        std::vector<double> shift(points.size());
+        std::vector<Vec3> moved = points;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            shift[i] = small(random);
+            moved[i] = points[i] + sphere.normals[i] * shift[i];
+        }
+        reach.moved(points, shift, {});
+        EXPECT_GT(reach.radii_known(), points.size() * 9 / 10); // small moves: kept
+        points = moved;
+        round(points);
+    }
+    // One point moved far: the radii near it are forgotten (asked by the k-nearest query), the
+    // others kept; every answer still exact.
+    std::vector<double> shift(points.size(), 0.0);
+    shift[0] = 0.5;
+    std::vector<Vec3> moved = points;
+    moved[0] = points[0] + sphere.normals[0] * shift[0];
+    reach.moved(points, shift, {});
+    EXPECT_LT(reach.radii_known(), points.size());
+    EXPECT_GT(reach.radii_known(), points.size() / 2);
+    round(moved);
+    // Another k: the radii are forgotten, the answers exact.
+    const KnnIndex index(moved);
+    reach.begin_round(moved.size(), k + 5);
+    EXPECT_EQ(reach.radii_known(), 0u);
+    reach.neighbours(index, 17, by_reach);
+    index.neighbours_of(17, k + 5, by_query);
+    EXPECT_EQ(indices_of(by_reach), indices_of(by_query));
+}
+
 TEST(NeighbourGraph, SymmetricUnionIsSymmetricSortedAndLoopFree) {
     const PointSet s = testing::sample_torus(3000);
     const KnnIndex index(s.positions);

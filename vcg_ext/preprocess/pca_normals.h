@@ -26,7 +26,8 @@ int coarse_neighbour_count(std::size_t input_points, std::size_t coarse_points, 
 /// For each point: the smallest-eigenvalue eigenvector of the covariance of the point and its
 /// `neighbours` nearest neighbours. A point whose covariance is degenerate takes the normal of
 /// the nearest point that has a defined one (D-5). When no point has one, `normals` is empty.
+/// `reach`, if given, carries the neighbourhoods' radii between rounds (knn.h).
 PcaNormals estimate_normals(const std::vector<Vec3>& positions, const KnnIndex& index,
-                            int neighbours, const Execution& exec);
+                            int neighbours, const Execution& exec, NeighbourReach* reach = nullptr);
 
 } // namespace hrsr

@@ -37,7 +37,7 @@ private:
 
 std::vector<Vec3> estimate(const std::vector<Vec3>& positions, const KnnIndex& index,
                            const PreprocessOptions& options, const Execution& exec,
-                           PreprocessReport& report) {
+                           PreprocessReport& report, NeighbourReach& reach) {
     Phase phase(exec, report, "normal estimation");
     if (positions.size() < 3) {
         for (PointFate& f : report.fate)
@@ -46,7 +46,7 @@ std::vector<Vec3> estimate(const std::vector<Vec3>& positions, const KnnIndex& i
                            " distinct point(s): at least 3 are needed to estimate normals");
     }
     report.pca_neighbours = neighbour_count(positions.size(), options.k_normals);
-    PcaNormals pca = estimate_normals(positions, index, report.pca_neighbours, exec);
+    PcaNormals pca = estimate_normals(positions, index, report.pca_neighbours, exec, &reach);
     report.pca_degenerate = pca.degenerate;
     if (pca.normals.empty()) {
         for (PointFate& f : report.fate)
@@ -58,13 +58,19 @@ std::vector<Vec3> estimate(const std::vector<Vec3>& positions, const KnnIndex& i
     return std::move(pca.normals);
 }
 
-void smooth(std::vector<Vec3>& positions, const std::vector<Vec3>& normals, const KnnIndex& index,
+// A kd-tree of the positions a round reads, and what the rounds before found (knn.h).
+struct Neighbourhoods {
+    const KnnIndex& index;
+    NeighbourReach& reach;
+};
+
+void smooth(std::vector<Vec3>& positions, const std::vector<Vec3>& normals, Neighbourhoods near,
             bool oriented, const PreprocessOptions& options, const Execution& exec,
             PreprocessReport& report) {
     Phase phase(exec, report, "smoothing");
     report.smoothing_neighbours = neighbour_count(positions.size(), options.k_smoothing);
-    SmoothingResult s = smooth_along_normals(positions, normals, index, report.smoothing_neighbours,
-                                             oriented, exec);
+    SmoothingResult s = smooth_along_normals(
+        positions, normals, near.index, report.smoothing_neighbours, oriented, exec, &near.reach);
     positions = std::move(s.positions);
     ++report.smoothing_rounds;
     report.smoothing_mean_shift = s.mean_shift; // normalised units = fraction of the diagonal
@@ -110,10 +116,11 @@ bool noisy(const PreparedCloud& cloud, const KnnIndex& index, const Execution& e
 // positions get (`index` on the input positions).
 std::vector<Vec3> neighbourhood_mean_normals(const PreparedCloud& cloud, const KnnIndex& index,
                                              const PreprocessOptions& options,
-                                             const Execution& exec) {
+                                             const Execution& exec, NeighbourReach& reach) {
     const int neighbours = neighbour_count(cloud.size(), options.k_smoothing);
     std::vector<Vec3> mean = cloud.normals;
-    for (int round = 0; round < 2; ++round) mean = averaged_normals(mean, index, neighbours, exec);
+    for (int round = 0; round < 2; ++round)
+        mean = averaged_normals(mean, index, neighbours, exec, &reach);
     return mean;
 }
 
@@ -122,9 +129,9 @@ std::vector<Vec3> neighbourhood_mean_normals(const PreparedCloud& cloud, const K
 // 0.3 % noise: 449 boundary edges in 15 pieces with the input normals, closed with the mean).
 void average_normals_if_noisy(PreparedCloud& cloud, const KnnIndex& index,
                               const PreprocessOptions& options, const Execution& exec,
-                              PreprocessReport& report) {
+                              PreprocessReport& report, NeighbourReach& reach) {
     if (noisy(cloud, index, exec, report))
-        cloud.normals = neighbourhood_mean_normals(cloud, index, options, exec);
+        cloud.normals = neighbourhood_mean_normals(cloud, index, options, exec, reach);
 }
 
 } // namespace
@@ -132,14 +139,17 @@ void average_normals_if_noisy(PreparedCloud& cloud, const KnnIndex& index,
 std::vector<Vec3> smoothed_positions(const std::vector<Vec3>& positions,
                                      const std::vector<Vec3>& normals,
                                      const PreprocessOptions& options, const Execution& exec,
-                                     PreprocessReport& report, const KnnIndex* index_of_positions) {
+                                     PreprocessReport& report, const KnnIndex* index_of_positions,
+                                     NeighbourReach* reach_of_positions) {
     std::vector<Vec3> smoothed = positions;
     if (options.distance != DistanceMode::Tangent || positions.size() < 2) return smoothed;
+    NeighbourReach own_reach;
+    NeighbourReach& reach = reach_of_positions ? *reach_of_positions : own_reach;
     for (int round = 0; round < 2; ++round) {
         std::optional<KnnIndex> own; // each round reads the previous one's positions
         const KnnIndex& index =
             round == 0 && index_of_positions ? *index_of_positions : own.emplace(smoothed);
-        smooth(smoothed, normals, index, true, options, exec, report);
+        smooth(smoothed, normals, {index, reach}, true, options, exec, report);
     }
     return smoothed;
 }
@@ -175,9 +185,10 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
             // with 0.3 % noise: 62k intersecting pairs); their mean over the smoothing
             // neighbourhood, in two rounds as the positions get, is the surface's where the
             // points lie (30 pairs).
-            cloud.smoothed_normals = neighbourhood_mean_normals(cloud, index, options, exec);
+            NeighbourReach reach;
+            cloud.smoothed_normals = neighbourhood_mean_normals(cloud, index, options, exec, reach);
             cloud.smoothed = smoothed_positions(cloud.positions, cloud.smoothed_normals, options,
-                                                exec, report, &index);
+                                                exec, report, &index, &reach);
         }
         return cloud;
     }
@@ -186,21 +197,24 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     // Schedule of §4.4: each round reads the previous round's positions through a kd-tree
     // built on them; with estimated normals they are re-estimated after each round.
     auto index = std::make_unique<KnnIndex>(cloud.smoothed);
+    NeighbourReach reach; // the rounds below ask the same k of the same points, moved
     if (estimated)
-        cloud.normals = estimate(cloud.smoothed, *index, options, exec, report);
+        cloud.normals = estimate(cloud.smoothed, *index, options, exec, report, reach);
     else
         check_input_orientation(*index, cloud.normals, exec, report);
     // The index is on the input positions until the first smoothing round (D-33).
     if (purpose == PrepareFor::Collapse && tangent) noisy(cloud, *index, exec, report);
     if (purpose == PrepareFor::Rsr && tangent && !estimated)
-        average_normals_if_noisy(cloud, *index, options, exec, report);
+        average_normals_if_noisy(cloud, *index, options, exec, report, reach);
     // With input normals, HRsR needs no smoothing of the full cloud: it collapses the unsmoothed
     // positions and smooths the collapsed cloud (§7).
     if (tangent && (estimated || purpose == PrepareFor::Rsr)) {
         for (int round = 0; round < 2; ++round) {
-            smooth(cloud.smoothed, cloud.normals, *index, !estimated, options, exec, report);
+            smooth(cloud.smoothed, cloud.normals, {*index, reach}, !estimated, options, exec,
+                   report);
             index = std::make_unique<KnnIndex>(cloud.smoothed);
-            if (estimated) cloud.normals = estimate(cloud.smoothed, *index, options, exec, report);
+            if (estimated)
+                cloud.normals = estimate(cloud.smoothed, *index, options, exec, report, reach);
         }
     }
     if (report.pca_degenerate > 0)

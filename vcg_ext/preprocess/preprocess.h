@@ -66,12 +66,14 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
                              InputOrder order = InputOrder::Any);
 
 /// Tangent mode: two smoothing rounds with the normals fixed (§4.4, §7); Euclidean mode: a copy.
-/// `index_of_positions`, if given, is a kd-tree on `positions` the first round uses.
+/// `index_of_positions`, if given, is a kd-tree on `positions` the first round uses, and
+/// `reach_of_positions` what earlier rounds on them found (knn.h).
 std::vector<Vec3> smoothed_positions(const std::vector<Vec3>& positions,
                                      const std::vector<Vec3>& normals,
                                      const PreprocessOptions& options, const Execution& exec,
                                      PreprocessReport& report,
-                                     const KnnIndex* index_of_positions = nullptr);
+                                     const KnnIndex* index_of_positions = nullptr,
+                                     NeighbourReach* reach_of_positions = nullptr);
 
 /// The symmetric union of the k-nearest-neighbour relation on `positions` (D-7).
 CsrGraph neighbour_graph(const std::vector<Vec3>& positions, int k, const Execution& exec);

@@ -39,14 +39,20 @@ double displacement(const std::vector<Vec3>& positions, const std::vector<Vec3>&
 
 SmoothingResult smooth_along_normals(const std::vector<Vec3>& positions,
                                      const std::vector<Vec3>& normals, const KnnIndex& index,
-                                     int neighbours, bool oriented, const Execution& exec) {
+                                     int neighbours, bool oriented, const Execution& exec,
+                                     NeighbourReach* reach) {
     SmoothingResult result;
     const std::size_t n = positions.size();
     result.positions.resize(n);
-    std::vector<double> shift(n, 0.0);
+    std::vector<double>& shift = result.shift;
+    shift.assign(n, 0.0);
+    if (reach) reach->begin_round(n, neighbours);
     parallel_for(exec, n, [&](std::size_t i) {
         thread_local std::vector<Neighbour> found;
-        index.neighbours_of(std::uint32_t(i), neighbours, found);
+        if (reach)
+            reach->neighbours(index, std::uint32_t(i), found);
+        else
+            index.neighbours_of(std::uint32_t(i), neighbours, found);
         shift[i] = displacement(positions, normals, i, found, oriented);
         result.positions[i] = positions[i] + normals[i] * shift[i];
     });
@@ -55,15 +61,20 @@ SmoothingResult smooth_along_normals(const std::vector<Vec3>& positions,
         result.max_shift = std::max(result.max_shift, std::abs(s));
     }
     if (n > 0) result.mean_shift /= double(n);
+    if (reach) reach->moved(positions, shift, without_progress(exec));
     return result;
 }
 
 std::vector<Vec3> averaged_normals(const std::vector<Vec3>& normals, const KnnIndex& index,
-                                   int neighbours, const Execution& exec) {
+                                   int neighbours, const Execution& exec, NeighbourReach* reach) {
     std::vector<Vec3> averaged(normals.size());
+    if (reach) reach->begin_round(normals.size(), neighbours);
     parallel_for(exec, normals.size(), [&](std::size_t i) {
         thread_local std::vector<Neighbour> found;
-        index.neighbours_of(std::uint32_t(i), neighbours, found);
+        if (reach)
+            reach->neighbours(index, std::uint32_t(i), found);
+        else
+            index.neighbours_of(std::uint32_t(i), neighbours, found);
         Vec3 sum = normals[i];
         for (const Neighbour& nb : found)
             if (normals[nb.index].dot(normals[i]) > 0) sum += normals[nb.index];
