@@ -28,6 +28,8 @@ struct KnnIndex::Tree {
 };
 
 KnnIndex::KnnIndex(const std::vector<Vec3>& points) : points_(points), size_(points.size()) {
+    for (const Vec3& p : points)
+        for (int a = 0; a < 3; ++a) coordinate_scale_ = std::max(coordinate_scale_, std::abs(p[a]));
     // vcg's constructor reads points[0]: an empty tree must never be built.
     if (!points_.empty()) tree_ = std::make_unique<Tree>(points_);
 }
@@ -142,9 +144,14 @@ bool visit_within(KdTreeWithSlots& kd, const Vec3& p, double squared_radius, Vis
             }
             continue;
         }
-        const double offset = p[int(node.dim)] - node.splitValue;
+        // The points were parted at the split value, or (vcglib of MeshLab 2020.09) at it in
+        // single precision: the far side is no nearer than the plane less that difference.
+        const double split = node.splitValue;
+        const double offset = p[int(node.dim)] - split;
+        const double beyond =
+            std::max(0.0, std::abs(offset) - std::abs(split - double(float(split))));
         const unsigned below = node.firstChildId, above = node.firstChildId + 1;
-        stack.push_back({offset < 0 ? above : below, offset * offset});
+        stack.push_back({offset < 0 ? above : below, beyond * beyond});
         stack.push_back({offset < 0 ? below : above, cell.squared_plane_distance});
     }
     return false;
@@ -165,23 +172,31 @@ bool KnnIndex::neighbours_within(std::uint32_t i, double radius, int k,
                                  std::vector<Neighbour>& out) const {
     out.clear();
     if (!tree_) return k <= 0;
+    if (k <= 0) return true;
+    // Near ties: vcglib's float pruning misjudges a split plane's distance by at most about
+    // 2^-24 of it and of the split coordinate, so where the k-th and the next are further apart
+    // than this, its query cannot have missed any of the k nearest.
+    const double relative = 1e-6, absolute = 1e-6 * coordinate_scale_;
+    const double gathered = radius * (1 + relative) + absolute; // holds a near tie of the k-th
     const auto& slot_points = tree_->kd.slot_points();
-    visit_within(tree_->kd, points_[i], radius * radius, [&](unsigned slot, double squared) {
+    visit_within(tree_->kd, points_[i], gathered * gathered, [&](unsigned slot, double squared) {
         if (slot_points[slot] != i) out.push_back({slot_points[slot], squared});
         return false;
     });
-    if (out.size() < std::size_t(std::max(k, 0))) return false;
-    if (out.size() > std::size_t(k)) {
+    if (out.size() < std::size_t(k)) return false;
+    if (out.size() > std::size_t(k))
         std::nth_element(out.begin(), out.begin() + k, out.end(), closer);
-        // A tie at the k-th distance: vcglib's query would keep whichever of the tied points
-        // its walk met first, this one the smallest indices. Left to that query, so that the
-        // set is always the one neighbours_of() gives (the torus model's regular grid, RsR:
-        // closed with vcglib's choice, a 10-edge hole with the other).
-        double kth = 0;
-        for (int e = 0; e < k; ++e) kth = std::max(kth, out[std::size_t(e)].squared_distance);
-        if (out[std::size_t(k)].squared_distance == kth) return false;
-        out.resize(std::size_t(k));
-    }
+    double kth = 0;
+    for (int e = 0; e < k; ++e) kth = std::max(kth, out[std::size_t(e)].squared_distance);
+    const double kth_distance = std::sqrt(kth);
+    if (kth_distance > radius) return false; // the next one may lie beyond what was gathered
+    // A tie, exact or near, at the k-th distance: which of them vcglib's query keeps only its
+    // walk decides (exact ties on the torus model's regular grid: RsR closed with vcglib's
+    // choice, a 10-edge slit with the smallest indices). Left to that query.
+    if (out.size() > std::size_t(k) &&
+        std::sqrt(out[std::size_t(k)].squared_distance) <= kth_distance * (1 + relative) + absolute)
+        return false;
+    out.resize(std::size_t(k));
     sort_neighbours(out);
     return true;
 }

@@ -48,9 +48,9 @@ public:
                   const std::function<bool(double)>& accept) const;
     /// neighbours_of(i, k) when at least k others lie within `radius` of point i: every point
     /// within the radius gathered (no bounded queue to keep), the k nearest kept and sorted.
-    /// False, and `out` unspecified, when fewer than k lie there or the k-th and the next are
-    /// equally far (which of them neighbours_of() keeps, only vcglib's walk of the tree
-    /// decides). Thread-safe.
+    /// False, and `out` unspecified, when fewer than k lie there or the next one is within a
+    /// millionth of the k-th's distance: vcglib's query prunes its walk in single precision,
+    /// so which of such near ties it keeps, only its walk decides. Thread-safe.
     bool neighbours_within(std::uint32_t i, double radius, int k,
                            std::vector<Neighbour>& out) const;
     /// Every data point within `radius` of p, in no particular order. `out` is overwritten.
@@ -61,6 +61,7 @@ private:
     std::unique_ptr<Tree> tree_;
     const std::vector<Vec3>& points_;
     std::size_t size_ = 0;
+    double coordinate_scale_ = 0; ///< the largest |coordinate| of the points
 };
 
 /// What the k-nearest queries of a cloud's own points found, kept for the next round that asks
