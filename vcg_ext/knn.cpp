@@ -168,8 +168,8 @@ bool KnnIndex::at_least(const Vec3& p, double radius, std::size_t count,
     });
 }
 
-bool KnnIndex::neighbours_within(std::uint32_t i, double radius, int k,
-                                 std::vector<Neighbour>& out) const {
+bool KnnIndex::neighbours_within(std::uint32_t i, double radius, int k, std::vector<Neighbour>& out,
+                                 bool walk_order) const {
     out.clear();
     if (!tree_) return k <= 0;
     if (k <= 0) return true;
@@ -184,20 +184,24 @@ bool KnnIndex::neighbours_within(std::uint32_t i, double radius, int k,
         return false;
     });
     if (out.size() < std::size_t(k)) return false;
-    if (out.size() > std::size_t(k))
-        std::nth_element(out.begin(), out.begin() + k, out.end(), closer);
-    double kth = 0;
-    for (int e = 0; e < k; ++e) kth = std::max(kth, out[std::size_t(e)].squared_distance);
+    thread_local std::vector<double> distances;
+    distances.resize(out.size());
+    for (std::size_t e = 0; e < out.size(); ++e) distances[e] = out[e].squared_distance;
+    if (distances.size() > std::size_t(k))
+        std::nth_element(distances.begin(), distances.begin() + k, distances.end());
+    const double kth = *std::max_element(distances.begin(), distances.begin() + k);
     const double kth_distance = std::sqrt(kth);
     if (kth_distance > radius) return false; // the next one may lie beyond what was gathered
     // A tie, exact or near, at the k-th distance: which of them vcglib's query keeps only its
     // walk decides (exact ties on the torus model's regular grid: RsR closed with vcglib's
     // choice, a 10-edge slit with the smallest indices). Left to that query.
-    if (out.size() > std::size_t(k) &&
-        std::sqrt(out[std::size_t(k)].squared_distance) <= kth_distance * (1 + relative) + absolute)
+    if (distances.size() > std::size_t(k) &&
+        std::sqrt(distances[std::size_t(k)]) <= kth_distance * (1 + relative) + absolute)
         return false;
-    out.resize(std::size_t(k));
-    sort_neighbours(out);
+    out.erase(std::remove_if(out.begin(), out.end(),
+                             [kth](const Neighbour& n) { return n.squared_distance > kth; }),
+              out.end());
+    if (!walk_order) sort_neighbours(out);
     return true;
 }
 
@@ -232,8 +236,18 @@ void NeighbourReach::begin_round(std::size_t points, int k) {
 void NeighbourReach::neighbours(const KnnIndex& index, std::uint32_t i,
                                 std::vector<Neighbour>& out) {
     const double radius = radius_[i];
-    if (!(radius > 0 && index.neighbours_within(i, radius * (1 + kRadiusMargin), k_, out)))
-        index.neighbours_of(i, k_, out);
+    if (!(radius > 0 && index.neighbours_within(i, radius * (1 + kRadiusMargin), k_, out, true))) {
+        // The k-th distance by vcglib's query, then the points within it in the walk's order;
+        // tied at the k-th, the query's own (sorted).
+        thread_local std::vector<int> rank(1);
+        thread_local std::vector<double> kth;
+        rank[0] = k_;
+        index.squared_distances_at_ranks(i, rank, kth);
+        const double reach = std::sqrt(kth.front());
+        if (!(reach > 0 && std::isfinite(reach) &&
+              index.neighbours_within(i, reach * (1 + kRadiusMargin), k_, out, true)))
+            index.neighbours_of(i, k_, out);
+    }
     double farthest = 0;
     for (const Neighbour& n : out) farthest = std::max(farthest, n.squared_distance);
     radius_[i] = rounded_up(std::sqrt(farthest));

@@ -50,9 +50,10 @@ public:
     /// within the radius gathered (no bounded queue to keep), the k nearest kept and sorted.
     /// False, and `out` unspecified, when fewer than k lie there or the next one is within a
     /// millionth of the k-th's distance: vcglib's query prunes its walk in single precision,
-    /// so which of such near ties it keeps, only its walk decides. Thread-safe.
-    bool neighbours_within(std::uint32_t i, double radius, int k,
-                           std::vector<Neighbour>& out) const;
+    /// so which of such near ties it keeps, only its walk decides. With `walk_order` the k are
+    /// left in the order the walk met them, unsorted. Thread-safe.
+    bool neighbours_within(std::uint32_t i, double radius, int k, std::vector<Neighbour>& out,
+                           bool walk_order = false) const;
     /// Every data point within `radius` of p, in no particular order. `out` is overwritten.
     void within(const Vec3& p, double radius, std::vector<std::uint32_t>& out) const;
 
@@ -69,15 +70,17 @@ private:
 /// between them, §4.4): per point a distance within which at least k others lie. A radius query
 /// then finds the k nearest without vcglib's bounded queue: about three times cheaper at
 /// k = 192 (docs/BENCHMARKS.md, session 35). The set is always the k-nearest query's (a tie at
-/// the k-th distance goes to that query).
+/// the k-th distance goes to that query); its order is the walk's, for sums that must not
+/// depend on which round found the points.
 class NeighbourReach {
 public:
     /// Before a round over `points` points asking k of each: the radii are kept when the last
     /// round asked the same (else forgotten).
     void begin_round(std::size_t points, int k);
-    /// The round's k nearest others of point i of `index`'s points, as KnnIndex::neighbours_of
-    /// gives them: by radius where one is known, else by that query; the k-th distance found is
-    /// kept for the next round. Thread-safe for distinct i.
+    /// The round's k nearest others of point i of `index`'s points (KnnIndex::neighbours_of's
+    /// set) in the order of the kd-tree's walk from the point: by the kept radius where there is
+    /// one, else by the radius vcglib's query finds (neighbours_of's own order where the k-th is
+    /// tied). The k-th distance is kept for the next round. Thread-safe for distinct i.
     void neighbours(const KnnIndex& index, std::uint32_t i, std::vector<Neighbour>& out);
     /// The points moved from `before`, point i by at most |shift[i]| (the next rounds read a
     /// kd-tree of the new positions): a radius grows by its own point's shift and the largest

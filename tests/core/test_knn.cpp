@@ -209,16 +209,22 @@ TEST(NeighbourReach, EveryRoundFindsTheKNearestOfThePointsAsTheyStand) {
     NeighbourReach reach;
     std::mt19937 random(7);
     std::uniform_real_distribution<double> small(-0.002, 0.002); // spacing about 0.065
-    std::vector<Neighbour> by_reach, by_query;
+    std::vector<Neighbour> by_reach, by_query, afresh;
     const auto round = [&](const std::vector<Vec3>& at) {
         const KnnIndex index(at);
         reach.begin_round(at.size(), k);
+        NeighbourReach fresh; // no radius yet: by the k-nearest query
+        fresh.begin_round(at.size(), k);
         for (std::uint32_t i = 0; i < at.size(); ++i) {
             reach.neighbours(index, i, by_reach);
             index.neighbours_of(i, k, by_query);
-            ASSERT_EQ(by_reach.size(), by_query.size()) << "point " << i;
-            for (std::size_t e = 0; e < by_reach.size(); ++e)
-                ASSERT_EQ(by_reach[e].index, by_query[e].index) << "point " << i;
+            ASSERT_EQ(indices_of(by_reach), indices_of(by_query)) << "point " << i;
+            // The same order whichever way they were found (the sums over them do not depend
+            // on which rounds came before).
+            fresh.neighbours(index, i, afresh);
+            ASSERT_EQ(afresh.size(), by_reach.size());
+            for (std::size_t e = 0; e < afresh.size(); ++e)
+                ASSERT_EQ(afresh[e].index, by_reach[e].index) << "point " << i;
         }
     };
     round(points);
