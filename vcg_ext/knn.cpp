@@ -28,10 +28,13 @@ struct KnnIndex::Tree {
 };
 
 KnnIndex::KnnIndex(const std::vector<Vec3>& points) : points_(points), size_(points.size()) {
-    for (const Vec3& p : points)
-        for (int a = 0; a < 3; ++a) coordinate_scale_ = std::max(coordinate_scale_, std::abs(p[a]));
     // vcg's constructor reads points[0]: an empty tree must never be built.
-    if (!points_.empty()) tree_ = std::make_unique<Tree>(points_);
+    if (points_.empty()) return;
+    tree_ = std::make_unique<Tree>(points_);
+    const auto& box = tree_->kd._getAABBox(); // vcglib's, of these points
+    for (int a = 0; a < 3; ++a)
+        coordinate_scale_ =
+            std::max({coordinate_scale_, std::abs(box.min[a]), std::abs(box.max[a])});
 }
 
 KnnIndex::~KnnIndex() = default;

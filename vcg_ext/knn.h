@@ -100,6 +100,7 @@ private:
     /// "Near": the cells of a grid of at most kMaxCellsPerAxis³ cells about a radius wide
     /// (16 MB of floats) that the ball of a radius overlaps.
     static constexpr double kMaxCellsPerAxis = 160;
+    /// A ball spanning more cells than 1 + this a side keeps no radius (its query as it comes).
     static constexpr std::size_t kMaxCellsAcrossBall = 6;
     int k_ = 0;
     std::vector<float> radius_; ///< per point, rounded up; 0: unknown
