@@ -122,11 +122,15 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
     return orient3d_exact(a, b, c, d);
 }
 
-int orient2d(const Vec3& a, const Vec3& b, const Vec3& c, int i, int j) {
-    const double left = (b[i] - a[i]) * (c[j] - a[j]), right = (b[j] - a[j]) * (c[i] - a[i]);
+int orient2d_filtered(double left, double right) {
     const double det = left - right;
-    if (decided(det, std::abs(left) + std::abs(right), kOrient2dBound)) return sign(det);
-    return orient2d_exact(a, b, c, i, j);
+    return decided(det, std::abs(left) + std::abs(right), kOrient2dBound) ? sign(det) : 2;
+}
+
+int orient2d(const Vec3& a, const Vec3& b, const Vec3& c, int i, int j) {
+    const int filtered =
+        orient2d_filtered((b[i] - a[i]) * (c[j] - a[j]), (b[j] - a[j]) * (c[i] - a[i]));
+    return filtered != 2 ? filtered : orient2d_exact(a, b, c, i, j);
 }
 
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {

@@ -15,6 +15,12 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 /// counter-clockwise with axis i to the right and axis j up, 0 when they are collinear there.
 int orient2d(const Vec3& a, const Vec3& b, const Vec3& c, int i, int j);
 
+/// The sign of a 2-D orientation determinant `left − right` whose two products were evaluated in
+/// doubles from coordinate differences ((b_i − a_i)(c_j − a_j) and (b_j − a_j)(c_i − a_i), as
+/// orient2d() does), when Shewchuk's error bound decides it; 2 when only orient2d() can. Lets a
+/// caller that has the products already skip the call.
+int orient2d_filtered(double left, double right);
+
 /// Whether a, b, c lie on one line (two or three of them coinciding included), exactly.
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c);
 

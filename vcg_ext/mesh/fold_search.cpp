@@ -1,5 +1,6 @@
 #include "mesh/fold_search.h"
 
+#include "mesh/embedded_fans.h"
 #include "mesh/welding.h"
 
 namespace hrsr {
@@ -9,6 +10,7 @@ FoldSearch::FoldSearch(const std::vector<Vec3>& positions_, const std::vector<Tr
     : positions(positions_), exec(without_progress(exec_)),
       representative(same_position_representatives(positions_, exec)),
       geometry(positions_, welded_triangles(triangles, representative, exec)),
-      grid(geometry, exec_), pairs(grid.all_pairs(geometry, exec_)) {}
+      embedded_fan(embedded_fans(geometry, exec)), grid(geometry, exec_),
+      pairs(grid.all_pairs(geometry, embedded_fan, exec_)) {}
 
 } // namespace hrsr

@@ -23,7 +23,10 @@ struct FoldSearch {
     const std::vector<Vec3>& positions;
     const Execution exec; ///< the threads the repair's whole-mesh passes use (no progress)
     const std::vector<std::uint32_t> representative; ///< per vertex: the first at its position
-    TriangleGeometry geometry;       ///< the triangles over representatives, kept up to date
+    TriangleGeometry geometry; ///< the triangles over representatives, kept up to date
+    /// Per representative: its faces met only where they join when the search ran
+    /// (embedded_fans.h); found before the grid, whose entries need more memory.
+    const std::vector<std::uint8_t> embedded_fan;
     TriangleGrid grid;               ///< changed and added faces are filed again
     std::vector<TrianglePair> pairs; ///< sorted; kept exact by whoever changes `geometry`
 };

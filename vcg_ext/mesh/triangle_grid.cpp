@@ -1,5 +1,6 @@
 #include "mesh/triangle_grid.h"
 
+#include "mesh/embedded_fans.h"
 #include "radix_pass.h"
 
 #include <algorithm>
@@ -89,6 +90,12 @@ void TriangleGrid::file_faces(const TriangleGeometry& g, const Execution& exec) 
 
 std::vector<TrianglePair> TriangleGrid::all_pairs(const TriangleGeometry& g,
                                                   const Execution& exec) const {
+    return all_pairs(g, embedded_fans(g, exec), exec);
+}
+
+std::vector<TrianglePair> TriangleGrid::all_pairs(const TriangleGeometry& g,
+                                                  const std::vector<std::uint8_t>& embedded_fan,
+                                                  const Execution& exec) const {
     const std::size_t cells = cell_start_.size() - 1, block = 256;
     std::vector<std::vector<TrianglePair>> found((cells + block - 1) / block);
     parallel_for(exec, found.size(), [&](std::size_t b) {
@@ -118,7 +125,8 @@ std::vector<TrianglePair> TriangleGrid::all_pairs(const TriangleGeometry& g,
                     if (index(std::max(s.low[0], t.low[0]), std::max(s.low[1], t.low[1]),
                               std::max(s.low[2], t.low[2])) != here)
                         continue;
-                    if (g.intersect_unboxed(g.triangle(s.face), g.triangle(t.face)))
+                    const Triangle &ts = g.triangle(s.face), &tt = g.triangle(t.face);
+                    if (!share_embedded_fan(ts, tt, embedded_fan) && g.intersect_unboxed(ts, tt))
                         found[b].emplace_back(std::min(s.face, t.face), std::max(s.face, t.face));
                 }
         }

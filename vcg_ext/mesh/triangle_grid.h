@@ -56,6 +56,8 @@ public:
         return std::uint32_t(triangles_.size() - 1);
     }
     std::size_t size() const { return triangles_.size(); }
+    const std::vector<Triangle>& triangles() const { return triangles_; }
+    std::size_t vertex_count() const { return positions_.size(); }
     const Vec3& position(std::uint32_t v) const { return positions_[v]; }
 
     Box box(const Triangle& t) const {
@@ -99,7 +101,13 @@ public:
     TriangleGrid(const TriangleGeometry& g, const Execution& exec);
 
     /// Every intersecting pair (i < j), sorted; each pair is tested in the first cell both
-    /// boxes share only, cells in parallel blocks.
+    /// boxes share only, cells in parallel blocks. Pairs that share a vertex flagged in
+    /// `embedded_fan` (embedded_fans.h, for `g` as it stands; empty: none) are not tested: they
+    /// do not intersect.
+    std::vector<TrianglePair> all_pairs(const TriangleGeometry& g,
+                                        const std::vector<std::uint8_t>& embedded_fan,
+                                        const Execution& exec) const;
+    /// The same, with the fans of `g` found first.
     std::vector<TrianglePair> all_pairs(const TriangleGeometry& g, const Execution& exec) const;
 
     /// Calls visit(cell index) for every cell `box` covers.
