@@ -129,6 +129,28 @@ TEST(EmbeddedFans, ASteepFanQualifiesSeenAlongItsNormal) {
     expect_sound(fan, "steep fan");
 }
 
+TEST(EmbeddedFans, ProductsThatUnderflowDecideNoTurn) {
+    // Found by a review: in the plane z = 0, a vertex with two tiny neighbours whose sector
+    // turns clockwise (by about 5e-5 of the smallest subnormal) among four huge ones turning
+    // counter-clockwise. The products of the tiny differences underflow; multiplied by the
+    // fan's huge normal, their error once passed for a counter-clockwise turn, the fan was
+    // flagged and three overlapping pairs were missed.
+    TestMesh fan;
+    fan.positions = {Vec3(-0x1.030f9bc3e7a08p-527, -0x1.6deb840d53a59p-528, 0),
+                     Vec3(0x1.b35ea43c185f8p-527, 0x1.00249003c916ap-526, 0),
+                     Vec3(0x1.98911cf0643c2p-511, 0x1.990c290a3df95p-511, 0)};
+    for (const double degrees : {10.0, 100.0, 190.0, 280.0}) {
+        const double a = degrees * M_PI / 180;
+        fan.positions.push_back(Vec3(std::cos(a), std::sin(a), 0) * std::ldexp(1.0, 110));
+    }
+    const std::uint32_t ring[] = {3, 1, 2, 4, 5, 6};
+    for (std::uint32_t k = 0; k < 6; ++k) fan.triangles.push_back({0, ring[k], ring[(k + 1) % 6]});
+    EXPECT_EQ(fans_of(fan)[0], 0);
+    const TriangleGeometry g(fan.positions, fan.triangles);
+    EXPECT_EQ(TriangleGrid(g, {1, nullptr}).all_pairs(g, {1, nullptr}).size(), 3u);
+    expect_sound(fan, "underflow");
+}
+
 TEST(EmbeddedFans, PinchedDegenerateAndFoldedFansDoNotQualify) {
     // Two cones sharing their apex: two fans at one vertex.
     TestMesh cones = winding_fan(6, 1);

@@ -2,6 +2,7 @@
 
 #include "mesh/exact_predicates.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -78,11 +79,22 @@ private:
         return true;
     }
 
-    // The same test as covers_once() below, looking along `n` (any direction; the fan's normal
-    // suits a rough surface best) at the ray along the coordinate axis nearest to n's plane.
-    // Each sign comes from a filter with a safe error bound on rounded differences; where one
-    // cannot decide (near zero, or exactly zero), the fan is not certified here.
-    bool covers_once_along(const Vec3& n) const {
+    // The same test as covers_once() below, looking along `normal` (any direction; the fan's
+    // normal suits a rough surface best) at the ray along the coordinate axis most nearly in the
+    // plane orthogonal to it (its smallest component). Each sign comes from a filter with a safe
+    // error bound on rounded differences; where one cannot decide (near zero, or exactly zero),
+    // the fan is not certified here.
+    bool covers_once_along(const Vec3& normal) const {
+        // Scaled by a power of two (exactly) to a largest component in [1, 2): a product of
+        // differences that underflows then errs by less than 2^-1073 in a term, far below the
+        // bound's slack over the smallest trusted permanent (unscaled, a huge component could
+        // magnify that error past the bound).
+        const double largest =
+            std::max({std::abs(normal[0]), std::abs(normal[1]), std::abs(normal[2])});
+        if (!std::isfinite(largest) || largest == 0) return false;
+        int exponent = 0;
+        std::frexp(largest, &exponent);
+        const Vec3 n = normal * std::ldexp(1.0, 1 - exponent);
         int ray_axis = 0;
         for (int k = 1; k < 3; ++k)
             if (std::abs(n[k]) < std::abs(n[ray_axis])) ray_axis = k;
@@ -118,12 +130,15 @@ private:
         return covers == 1;
     }
 
-    // The sign of a sum of a few products of rounded differences, `permanent` the sum of their
-    // magnitudes, where the rounding errors (below 8 units in the last place of the permanent,
-    // as for Shewchuk's orient3d) cannot change it; 0 where they could, an exact zero included.
+    // The sign of a sum of at most three products of rounded differences and factors of at most
+    // 2 (the scaled normal), `permanent` the sum of their magnitudes, where the rounding errors
+    // cannot change it; 0 where they could, an exact zero included. The errors (ε = 2^-53): two
+    // rounded differences, their product, the difference of two products, the product by a
+    // factor, the sum of three terms, about 6 ε of the permanent (Shewchuk's orient3d, with its
+    // third row rounded too, has (7 + 56 ε) ε), plus underflow, below 2^-1073 a term.
     static int decided_sign(double value, double permanent) {
-        constexpr double kBound = 9 * 0x1p-53;      // (7 + 56 ε) ε, rounded up
-        constexpr double kSmallestTrusted = 1e-250; // the bound assumes no underflow
+        constexpr double kBound = 9 * 0x1p-53;      // 9 ε: 3 ε of slack
+        constexpr double kSmallestTrusted = 1e-250; // 3 ε of it dwarfs any underflow
         if (!(permanent >= kSmallestTrusted) || !(std::abs(value) > kBound * permanent)) return 0;
         return value > 0 ? 1 : -1;
     }

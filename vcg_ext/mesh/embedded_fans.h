@@ -18,10 +18,11 @@ namespace hrsr {
 /// containing one ray number one). The projection then maps the fan one to one, so two of its
 /// faces meet only in the vertex and the edges they share: no pair of them intersects by the rule
 /// of self_intersections.h. The directions tried: the fan's normal (every sign from a filter
-/// with a safe error bound; a sign it cannot decide, zero included, fails the direction), then
-/// the coordinate axes (exact: orientation signs and comparisons of coordinates). 0 for vertices
-/// on a border, with several fans, more than 24 faces or a degenerate face, and where the fan
-/// folds over. Vertices in parallel, the same result for any thread count.
+/// with a safe error bound, underflow included; a sign it cannot decide, zero included, fails
+/// the direction), then the coordinate axes (exact: orientation signs and comparisons of
+/// coordinates). 0 for vertices on a border, with several fans, more than 24 faces or a
+/// degenerate face, and where the fan folds over. Vertices in parallel, the same result for any
+/// thread count.
 std::vector<std::uint8_t> embedded_fans(const TriangleGeometry& g, const Execution& exec);
 
 /// Whether triangles a and b share a vertex whose fan `embedded` certifies (empty: none).
