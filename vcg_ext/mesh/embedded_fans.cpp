@@ -59,7 +59,8 @@ public:
 private:
     // Every neighbour starts exactly one sector and ends exactly one: the sectors chain into
     // cycles around v (a border, a repeated face or a non-manifold edge breaks this). Counted
-    // for each sector over all, without branches (a fan has few sectors).
+    // for each sector over all, without branches (a fan has few sectors): GCC vectorises the
+    // inner loop over the two id arrays (checked with -fopt-info-vec), hence their copies.
     bool closed() {
         const std::uint32_t n = count_; // a local: the arrays' stores cannot change it
         for (std::uint32_t c = 0; c < n; ++c) {
