@@ -2,6 +2,8 @@
 // configurations where a double evaluation is wrong, and folded meshes.
 #include "mesh/exact_predicates.h"
 #include "mesh/self_intersections.h"
+#include "mesh/triangle_against_faces.h"
+#include "mesh/triangle_grid.h"
 #include "mesh/triangle_intersection.h"
 
 #include "fold_fixtures.h"
@@ -9,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 namespace hrsr {
 namespace {
@@ -61,6 +64,83 @@ TEST(ExactPredicates, CoplanarFloatsAreCoplanarWhereDoublesSayNot) {
     const Vec3 down(p[3][0], p[3][1], double(std::nextafter(float(p[3][2]), -1e9f)));
     EXPECT_EQ(exact::orient3d(p[0], p[1], p[2], up), -exact::orient3d(p[0], p[1], p[2], down));
     EXPECT_NE(exact::orient3d(p[0], p[1], p[2], up), 0);
+}
+
+// Points for the filters' tests: uniform, on a coarse integer grid (exact zeros), nearly on
+// the plane of the first three (rounded), and of extreme exponents.
+std::vector<Vec3> filter_test_points(std::mt19937& random, int kind, std::size_t n) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::uniform_int_distribution<int> grid(-2, 2);
+    std::vector<Vec3> p;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (kind == 0) p.emplace_back(unit(random), unit(random), unit(random));
+        if (kind == 1) p.emplace_back(grid(random), grid(random), grid(random));
+        if (kind == 2) {
+            if (i < 3) {
+                p.emplace_back(unit(random), unit(random), unit(random));
+                continue;
+            }
+            const double s = unit(random), t = unit(random);
+            const Vec3 q = p[0] + (p[1] - p[0]) * s + (p[2] - p[0]) * t;
+            p.emplace_back(float(q[0]), float(q[1]), float(q[2]) + grid(random) * 1e-12);
+        }
+        if (kind == 3)
+            p.emplace_back(std::ldexp(unit(random), grid(random) * 500),
+                           std::ldexp(unit(random), grid(random) * 500), unit(random) * 1e-310);
+    }
+    return p;
+}
+
+TEST(ExactPredicates, PlaneSidesDecideAsOrient3d) {
+    std::mt19937 random(5);
+    for (int kind = 0; kind < 4; ++kind) {
+        std::size_t decided = 0, tested = 0;
+        for (int plane = 0; plane < 200; ++plane) {
+            const std::vector<Vec3> p = filter_test_points(random, kind, 53);
+            const exact::PlaneSides sides(p[0], p[1], p[2]);
+            for (std::size_t i = 0; i < p.size(); ++i) {
+                const int side = sides.side(p[i]);
+                ++tested;
+                if (side == 2) continue;
+                ++decided;
+                ASSERT_EQ(side, exact::orient3d(p[0], p[1], p[2], p[i]))
+                    << "kind " << kind << ", plane " << plane << ", point " << i;
+            }
+        }
+        // Never deciding would pass the check above: the filter must decide most of the
+        // uniform cases (the plane's own corners are exact zeros it may leave undecided).
+        if (kind == 0) {
+            EXPECT_GT(double(decided) / double(tested), 0.9);
+        }
+    }
+}
+
+TEST(TriangleIntersection, OneTriangleAgainstManyAnswersAsThePairTest) {
+    // Triangles on a small grid of points, sharing corners often, against every other.
+    std::mt19937 random(3);
+    std::size_t intersecting = 0, beside = 0;
+    for (int kind : {0, 1, 2}) {
+        const std::vector<Vec3> points = filter_test_points(random, kind, 12);
+        std::uniform_int_distribution<std::uint32_t> corner(0, 11);
+        std::vector<Triangle> triangles;
+        while (triangles.size() < 300) {
+            const Triangle t{corner(random), corner(random), corner(random)};
+            if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) triangles.push_back(t);
+        }
+        const TriangleGeometry g(points, triangles);
+        for (const Triangle& t : triangles) {
+            if (g.degenerate(t)) continue;
+            const TriangleAgainstFaces against(g, t);
+            for (const Triangle& b : triangles) {
+                if (g.degenerate(b)) continue;
+                const bool expected = g.intersect_unboxed(t, b);
+                ASSERT_EQ(against.intersects(b), expected);
+                (expected ? intersecting : beside) += 1;
+            }
+        }
+    }
+    EXPECT_GT(intersecting, 1000U);
+    EXPECT_GT(beside, 1000U);
 }
 
 TEST(TriangleIntersection, ApartTrianglesThatTouchAtAPointIntersect) {

@@ -122,6 +122,32 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
     return orient3d_exact(a, b, c, d);
 }
 
+PlaneSides::PlaneSides(const Vec3& a, const Vec3& b, const Vec3& c) : a_(a) {
+    const Vec3 u = b - a, v = c - a;
+    // A minor's product that underflowed, multiplied by a large difference d − a, would carry
+    // an error the bound does not hold: with every difference zero or within 2^±400 none can
+    // (products of coordinates given in floats never do). Else only orient3d() decides.
+    for (int k = 0; k < 3; ++k)
+        for (const double x : {u[k], v[k]})
+            if (x != 0 && !(std::abs(x) >= 0x1p-400 && std::abs(x) <= 0x1p400)) trusted_ = false;
+    const double yz = u[1] * v[2], zy = u[2] * v[1], zx = u[2] * v[0], xz = u[0] * v[2],
+                 xy = u[0] * v[1], yx = u[1] * v[0];
+    normal_ = Vec3(yz - zy, zx - xz, xy - yx);
+    permanent_ =
+        Vec3(std::abs(yz) + std::abs(zy), std::abs(zx) + std::abs(xz), std::abs(xy) + std::abs(yx));
+}
+
+int PlaneSides::side(const Vec3& d) const {
+    // orient3d's determinant expanded along the row d − a instead of a column: three rounded
+    // differences times 2 × 2 minors of rounded differences, summed, as Shewchuk's bound assumes.
+    if (!trusted_) return 2;
+    const double wx = d[0] - a_[0], wy = d[1] - a_[1], wz = d[2] - a_[2];
+    const double det = wx * normal_[0] + wy * normal_[1] + wz * normal_[2];
+    const double permanent =
+        std::abs(wx) * permanent_[0] + std::abs(wy) * permanent_[1] + std::abs(wz) * permanent_[2];
+    return decided(det, permanent, kOrient3dBound) ? sign(det) : 2;
+}
+
 int orient2d_filtered(double left, double right) {
     const double det = left - right;
     return decided(det, std::abs(left) + std::abs(right), kOrient2dBound) ? sign(det) : 2;

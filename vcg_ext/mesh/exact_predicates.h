@@ -21,6 +21,21 @@ int orient2d(const Vec3& a, const Vec3& b, const Vec3& c, int i, int j);
 /// caller that has the products already skip the call.
 int orient2d_filtered(double left, double right);
 
+/// orient3d(a, b, c, d) for many d against one plane abc, the plane's part of the determinant
+/// evaluated once: side(d) is its sign where Shewchuk's error bound for orient3d decides it (the
+/// same form of determinant, rows d − a, b − a, c − a), 2 where only orient3d() can.
+class PlaneSides {
+public:
+    PlaneSides(const Vec3& a, const Vec3& b, const Vec3& c);
+    int side(const Vec3& d) const;
+
+private:
+    Vec3 a_;
+    Vec3 normal_;         ///< (b − a) × (c − a), each component a difference of two products
+    Vec3 permanent_;      ///< per component, the sum of those products' magnitudes
+    bool trusted_ = true; ///< no product of the minors can have underflowed
+};
+
 /// Whether a, b, c lie on one line (two or three of them coinciding included), exactly.
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c);
 

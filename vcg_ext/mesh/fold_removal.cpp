@@ -4,6 +4,7 @@
 #include "graph/concurrent_sets.h"
 #include "mesh/fans.h"
 #include "mesh/small_holes_fill.h"
+#include "mesh/triangle_against_faces.h"
 #include "mesh/triangle_grid.h"
 
 #include <algorithm>
@@ -982,12 +983,14 @@ private:
     // The standing face across f's edge k (from corner k to k + 1), or none.
     std::optional<std::uint32_t> across(std::uint32_t f, int k) const {
         const std::uint32_t a = triangles_[f][k], b = triangles_[f][(k + 1) % 3];
-        for (std::uint32_t g : faces_of(b)) {
+        std::optional<std::uint32_t> found;
+        any_face_index(b, [&](std::uint32_t g) {
             const Triangle& t = triangles_[g];
             for (int j = 0; j < 3; ++j)
-                if (g != f && t[j] == b && t[(j + 1) % 3] == a) return g;
-        }
-        return std::nullopt;
+                if (g != f && t[j] == b && t[(j + 1) % 3] == a) found = g;
+            return found.has_value();
+        });
+        return found;
     }
 
     std::vector<Split> splits_near(std::uint32_t v) {
@@ -998,6 +1001,8 @@ private:
         std::sort(faces.begin(), faces.end());
         std::vector<Split> splits;
         for (std::uint32_t f : faces) {
+            // Every split below goes over f: none is taken where f is not (put_back's test).
+            if (!goes_over(v, f)) continue;
             const Triangle t = triangles_[f];
             const std::array<Triangle, 3> three = split_around(t, v);
             splits.push_back({{f}, {three.begin(), three.end()}, {f, f, f}});
@@ -1050,6 +1055,11 @@ private:
             splits.push_back({{}, {first, second}, {f, g}});
     }
 
+    // v may go over face f: f faces v's normal and v is not a spike over it.
+    bool goes_over(std::uint32_t v, std::uint32_t f) const {
+        return low_over(v, f) && normal_of(triangles_[f]).dot(normals_[v]) > 0;
+    }
+
     // v is at most half face f's longest side off its plane (not a spike).
     bool low_over(std::uint32_t v, std::uint32_t f) const {
         const Triangle& t = triangles_[f];
@@ -1073,10 +1083,8 @@ private:
         for (std::size_t i = 0; i < splits.size(); ++i) {
             const Split& split = splits[i];
             double smallest = 4;
-            bool proper_split =
-                std::all_of(split.source.begin(), split.source.end(), [&](std::uint32_t f) {
-                    return low_over(v, f) && normal_of(triangles_[f]).dot(normals_[v]) > 0;
-                });
+            bool proper_split = std::all_of(split.source.begin(), split.source.end(),
+                                            [&](std::uint32_t f) { return goes_over(v, f); });
             for (std::size_t k = 0; k < split.triangles.size() && proper_split; ++k) {
                 const Triangle& t = split.triangles[k];
                 proper_split = normal_of(t).dot(normal_of(triangles_[split.source[k]])) > 0 &&
@@ -1113,9 +1121,9 @@ private:
     // intersects_gathered() among the gathered faces that still stand.
     bool intersects_gathered_standing(const Triangle& t) const {
         const Box box = geometry_.box(t);
+        const TriangleAgainstFaces against(geometry_, t);
         for (const auto& [f, b] : near_.found())
-            if (alive_[f] && box.overlaps(b) &&
-                geometry_.intersect_unboxed(t, geometry_.triangle(f)))
+            if (alive_[f] && box.overlaps(b) && against.intersects(geometry_.triangle(f)))
                 return true;
         return false;
     }
@@ -1294,8 +1302,9 @@ private:
     // intersects_standing() among the gathered faces (t within the box they were gathered for).
     bool intersects_gathered(const Triangle& t) {
         const Box box = geometry_.box(t);
+        const TriangleAgainstFaces against(geometry_, t);
         for (const auto& [f, b] : near_.found())
-            if (box.overlaps(b) && geometry_.intersect_unboxed(t, geometry_.triangle(f))) {
+            if (box.overlaps(b) && against.intersects(geometry_.triangle(f))) {
                 blocker_ = f;
                 return true;
             }
@@ -1316,6 +1325,7 @@ private:
         std::vector<std::uint32_t> faces;
         for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
             if (alive_[at_.corner[e] / 3]) faces.push_back(at_.corner[e] / 3);
+        if (!touched_[v]) return faces; // no face was ever added at v
         const auto it = added_at_.find(v);
         if (it != added_at_.end())
             for (std::uint32_t f : it->second)
@@ -1329,10 +1339,23 @@ private:
     bool any_face(std::uint32_t v, Test&& test) const {
         for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
             if (alive_[at_.corner[e] / 3] && test(triangles_[at_.corner[e] / 3])) return true;
+        if (!touched_[v]) return false; // no face was ever added at v
         const auto it = added_at_.find(v);
         if (it == added_at_.end()) return false;
         return std::any_of(it->second.begin(), it->second.end(),
                            [&](std::uint32_t f) { return alive_[f] && test(triangles_[f]); });
+    }
+
+    // any_face() with the face's number.
+    template <class Test>
+    bool any_face_index(std::uint32_t v, Test&& test) const {
+        for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
+            if (alive_[at_.corner[e] / 3] && test(at_.corner[e] / 3)) return true;
+        if (!touched_[v]) return false; // no face was ever added at v
+        const auto it = added_at_.find(v);
+        if (it == added_at_.end()) return false;
+        return std::any_of(it->second.begin(), it->second.end(),
+                           [&](std::uint32_t f) { return alive_[f] && test(f); });
     }
 
     bool has_standing_face(std::uint32_t v) const {
@@ -1341,18 +1364,26 @@ private:
 
     // Whether a and b are the same triangle of positions.
     bool same_positions(const Triangle& a, const Triangle& b) const {
-        Triangle wa = welded(a), wb = welded(b);
-        std::sort(wa.begin(), wa.end());
-        std::sort(wb.begin(), wb.end());
-        return wa == wb;
+        return sorted_positions(a) == sorted_positions(b);
+    }
+
+    // t's corners welded, in increasing order.
+    Triangle sorted_positions(const Triangle& t) const {
+        std::uint32_t a = representative_[t[0]], b = representative_[t[1]],
+                      c = representative_[t[2]];
+        if (a > b) std::swap(a, b);
+        if (b > c) std::swap(b, c);
+        if (a > b) std::swap(a, b);
+        return {a, b, c};
     }
 
     // A standing face has t's three corners (the fill would make a duplicate). Positions
     // count, as in `hrsr check`: the faces around every copy of t's first corner.
     bool repeats_a_face(const Triangle& t) const {
+        const Triangle corners = sorted_positions(t);
         const auto repeats = [&](std::uint32_t corner) {
-            return any_face(corner,
-                            [&](const Triangle& other) { return same_positions(t, other); });
+            return any_face(
+                corner, [&](const Triangle& other) { return sorted_positions(other) == corners; });
         };
         const auto copies = copies_.find(representative_[t[0]]);
         if (copies == copies_.end()) return repeats(t[0]);

@@ -2,6 +2,7 @@
 
 #include "index_types.h"
 #include "mesh/split_mesh.h"
+#include "mesh/triangle_against_faces.h"
 
 #include <algorithm>
 #include <array>
@@ -205,11 +206,12 @@ private:
                                    std::size_t limit) const {
         if (geometry_.degenerate(t)) return 0;
         const Box box = geometry_.box(t);
+        const TriangleAgainstFaces against(geometry_, t);
         std::size_t count = 0;
         for (const auto& [f, f_box] : near_.found()) {
             if (count >= limit) break;
             if (f != skip_a && f != skip_b && box.overlaps(f_box) &&
-                geometry_.intersect_unboxed(t, geometry_.triangle(f)))
+                against.intersects(geometry_.triangle(f)))
                 ++count;
         }
         return count;
@@ -333,8 +335,9 @@ private:
             const Triangle& t = geometry_.triangle(f);
             if (geometry_.degenerate(t)) continue;
             // Every face listed overlaps t's box.
+            const TriangleAgainstFaces against(geometry_, t);
             for (const auto& [o, o_box] : near(geometry_.box(t), f, kNoFace))
-                if (geometry_.intersect_unboxed(t, geometry_.triangle(o)))
+                if (against.intersects(geometry_.triangle(o)))
                     next.emplace_back(std::min(f, o), std::max(f, o));
         }
         std::sort(next.begin(), next.end());
