@@ -1,6 +1,6 @@
 #include "knn.h"
 
-#include <vcg/space/index/kdtree/kdtree.h>
+#include "knn_tree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,28 +9,18 @@
 
 namespace hrsr {
 
-// Leaves of 32 points instead of vcglib's 16: fewer nodes to descend for the same points; on the
-// 800k dragon sample queries at k = 1, 8, 71 and 193 took 6–18 % less (docs/BENCHMARKS.md,
-// session 22).
-constexpr unsigned kPointsPerLeaf = 32;
-
-// vcglib's tree, and which point each of its slots holds (mIndices: protected, with the same
-// name and meaning in the vcglib of MeshLab 2020.09, 2022.02 and 2025.07).
-struct KdTreeWithSlots : vcg::KdTree<double> {
-    using vcg::KdTree<double>::KdTree;
-    const std::vector<unsigned int>& slot_points() const { return mIndices; }
-};
-
 struct KnnIndex::Tree {
-    explicit Tree(const std::vector<Vec3>& points)
-        : kd(vcg::ConstDataWrapper<Vec3>(points.data(), int(points.size())), kPointsPerLeaf) {}
+    Tree(const std::vector<Vec3>& points, const Execution& exec) : kd(points, exec) {}
     KdTreeWithSlots kd;
 };
 
-KnnIndex::KnnIndex(const std::vector<Vec3>& points) : points_(points), size_(points.size()) {
+KnnIndex::KnnIndex(const std::vector<Vec3>& points) : KnnIndex(points, Execution{1, nullptr}) {}
+
+KnnIndex::KnnIndex(const std::vector<Vec3>& points, const Execution& exec)
+    : points_(points), size_(points.size()) {
     // vcg's constructor reads points[0]: an empty tree must never be built.
     if (points_.empty()) return;
-    tree_ = std::make_unique<Tree>(points_);
+    tree_ = std::make_unique<Tree>(points_, exec);
     const auto& box = tree_->kd._getAABBox(); // vcglib's, of these points
     for (int a = 0; a < 3; ++a)
         coordinate_scale_ =

@@ -23,6 +23,8 @@ struct Neighbour {
 class KnnIndex {
 public:
     explicit KnnIndex(const std::vector<Vec3>& points);
+    /// The same tree, built with `exec`'s threads (knn_tree.h).
+    KnnIndex(const std::vector<Vec3>& points, const Execution& exec);
     ~KnnIndex();
     KnnIndex(const KnnIndex&) = delete;
     KnnIndex& operator=(const KnnIndex&) = delete;

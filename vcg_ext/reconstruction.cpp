@@ -335,7 +335,7 @@ PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collaps
     // The kNN rows stay with the coarse cloud: RsR's candidate graph on it asks the same
     // queries of every piece (nearly all its rows lie in one piece).
     {
-        const KnnIndex index(coarse.smoothed);
+        const KnnIndex index(coarse.smoothed, exec);
         coarse.neighbours = knn_table(index, options.k, exec);
     }
     const CsrGraph graph = symmetric_union(coarse.neighbours, coarse.size(), exec);

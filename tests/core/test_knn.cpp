@@ -1,5 +1,6 @@
 #include "graph/neighbour_graph.h"
 #include "knn.h"
+#include "knn_tree.h"
 #include "samplers.h"
 
 #include <gtest/gtest.h>
@@ -332,6 +333,90 @@ TEST(NeighbourGraph, SymmetricUnionOfAnyRelationIsExactlyTheUnion) {
                               std::vector<std::uint32_t>(expected[i].begin(), expected[i].end()))
                         << "row " << i << ", " << context;
             }
+}
+
+// Two trees hold the same splits and leaves (the same slots) whatever their nodes' numbers.
+void expect_same_structure(KdTreeWithSlots& a, std::size_t na, KdTreeWithSlots& b, std::size_t nb) {
+    const auto &x = a._getNodes()[na], &y = b._getNodes()[nb];
+    ASSERT_EQ(x.leaf, y.leaf);
+    if (x.leaf) {
+        ASSERT_EQ(x.start, y.start);
+        ASSERT_EQ(x.size, y.size); // vcglib's 16 bits, truncated alike
+        return;
+    }
+    ASSERT_EQ(x.dim, y.dim);
+    ASSERT_EQ(x.splitValue, y.splitValue);
+    expect_same_structure(a, x.firstChildId, b, y.firstChildId);
+    expect_same_structure(a, x.firstChildId + 1, b, y.firstChildId + 1);
+}
+
+TEST(KnnTree, BuiltByLevelsInParallelIsVcglibsTree) {
+    ASSERT_TRUE(KdTreeWithSlots::builds_by_levels()); // this vcglib's build can be split
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::vector<std::vector<Vec3>> clouds(5);
+    for (int i = 0; i < 150000; ++i)
+        clouds[0].emplace_back(unit(random), unit(random), unit(random));
+    // 70,000 copies of one point (a leaf over 16 bits of size, and splits with an empty side).
+    clouds[1] = clouds[0];
+    clouds[1].resize(100000);
+    clouds[1].insert(clouds[1].end(), 70000, Vec3(0.5, 0.25, 0.75));
+    std::shuffle(clouds[1].begin(), clouds[1].end(), random);
+    // Flat and on a line: boxes without extent along some axes; a dense cluster in a sparse
+    // cloud (unequal subtrees).
+    for (int i = 0; i < 120000; ++i) clouds[2].emplace_back(unit(random), 0.5, unit(random) * 3);
+    for (int i = 0; i < 100000; ++i)
+        clouds[3].emplace_back(i % 7 == 0 ? unit(random) : 0.5 + unit(random) * 1e-4,
+                               i % 7 == 0 ? unit(random) : 0.5, i % 7 == 0 ? unit(random) : 0.5);
+    // A cube's corners and 70,000 copies of one point: the copies alone in a node at depth 5,
+    // whose split leaves one side empty, where the top levels stop.
+    for (int c = 0; c < 8; ++c) clouds[4].emplace_back(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+    clouds[4].insert(clouds[4].end(), 70000, Vec3(0.25, 0.25, 0.25));
+    for (const std::vector<Vec3>& p : clouds) {
+        KdTreeWithSlots vcglib(vcg::ConstDataWrapper<Vec3>(p.data(), int(p.size())),
+                               kPointsPerLeaf);
+        for (int threads : {2, 8}) {
+            KdTreeWithSlots ours(p, Execution{threads, nullptr});
+            // Built by levels: the root's right child's children come before the left
+            // subtree's deep nodes, unlike in vcglib's depth-first numbering.
+            if (!vcglib._getNodes()[2].leaf) {
+                EXPECT_LT(ours._getNodes()[2].firstChildId, vcglib._getNodes()[2].firstChildId);
+            }
+            ASSERT_EQ(ours._getNodes().size(), vcglib._getNodes().size());
+            EXPECT_EQ(ours._getNumLevel(), vcglib._getNumLevel());
+            EXPECT_EQ(ours._getAABBox().min, vcglib._getAABBox().min);
+            EXPECT_EQ(ours._getAABBox().max, vcglib._getAABBox().max);
+            EXPECT_TRUE(ours._getPoints() == vcglib._getPoints());
+            EXPECT_TRUE(ours.slot_points() == vcglib.slot_points());
+            expect_same_structure(ours, 0, vcglib, 0);
+        }
+        // And the queries agree with the index built on one thread.
+        const KnnIndex one(p), two(p, Execution{2, nullptr});
+        std::vector<Neighbour> a, b;
+        for (std::uint32_t q = 0; q < p.size(); q += 997) {
+            one.neighbours_of(q, 20, a);
+            two.neighbours_of(q, 20, b);
+            ASSERT_EQ(a.size(), b.size());
+            for (std::size_t e = 0; e < a.size(); ++e) EXPECT_EQ(a[e].index, b[e].index);
+        }
+    }
+}
+
+TEST(KnnTree, CopiesAtACoordinateNoFloatHoldsGiveOneTreeForAnyThreadCount) {
+    // vcglib's split compares with its split value in float: 0.3 rounds up, so every copy lies
+    // below it and vcglib's split reads past the node, into the next one's points (its tree
+    // then has leaves that overlap: not ours to mend). The build by levels must not read past
+    // its arrays there and must give one tree for any thread count.
+    std::vector<Vec3> p;
+    for (int c = 0; c < 8; ++c) p.emplace_back(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+    p.insert(p.end(), 70000, Vec3(0.3, 0.3, 0.3));
+    KdTreeWithSlots one(p, Execution{1, nullptr});
+    for (int threads : {2, 8}) {
+        KdTreeWithSlots more(p, Execution{threads, nullptr});
+        ASSERT_EQ(more._getNodes().size(), one._getNodes().size());
+        EXPECT_TRUE(more.slot_points() == one.slot_points());
+        expect_same_structure(more, 0, one, 0);
+    }
 }
 
 TEST(DisjointSets, UnitesAndFinds) {

@@ -61,7 +61,7 @@ CollapseGraph build_graph(const std::vector<Vec3>& positions, const std::vector<
     for (std::uint32_t i = 0; i < n; ++i) g.into[i] = i;
     KnnTable table; // the kd-tree and the kNN graphs are freed on return (peak memory)
     {
-        const KnnIndex index(g.x); // freed before the union's arrays are allocated
+        const KnnIndex index(g.x, exec); // freed before the union's arrays are allocated
         table = knn_table(index, k, exec);
     }
     const CsrGraph union_graph = symmetric_union(std::move(table), n, exec);

@@ -18,7 +18,7 @@ std::vector<std::vector<double>> input_reach(const std::vector<Vec3>& points,
     if (at.empty() || deepest < 1)
         return std::vector<std::vector<double>>(
             ranks.size(), std::vector<double>(at.size(), std::numeric_limits<double>::infinity()));
-    const KnnIndex index(points);
+    const KnnIndex index(points, exec);
     return input_reach(index, at, ranks, exec);
 }
 

@@ -247,7 +247,7 @@ std::size_t remove_unsampled_triangles(std::vector<Triangle>& triangles,
     const EdgeTriangles edges(triangles, vertices, quiet);
     const std::vector<Screened> queried = screened(edges, points, vertex_point, quiet);
     if (queried.empty() || rank < 1) return 0;
-    const KnnIndex index(points);
+    const KnnIndex index(points, quiet);
     const std::vector<std::uint32_t> beyond =
         beyond_reach(queried, points, vertex_point, index, rank, exec);
     if (beyond.empty()) return 0;

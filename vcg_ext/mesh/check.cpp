@@ -47,7 +47,7 @@ VertexReference vertex_reference(const MeshView& mesh, const PointSet& input, do
     for (std::size_t v = 0; v < used.size(); ++v)
         if (used[v]) vertices.push_back(mesh.positions[v]);
     if (vertices.empty() || input.size() == 0) return r;
-    const KnnIndex index(vertices);
+    const KnnIndex index(vertices, exec);
     std::vector<std::uint8_t> present(input.size(), 0);
     const double limit = r.tolerance * r.tolerance;
     parallel_for(exec, input.size(), [&](std::size_t i) {

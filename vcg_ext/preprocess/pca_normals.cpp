@@ -92,7 +92,7 @@ void copy_from_nearest_valid(const std::vector<Vec3>& positions,
             valid_points.push_back(positions[i]);
             valid_index.push_back(i);
         }
-    const KnnIndex valid_tree(valid_points);
+    const KnnIndex valid_tree(valid_points, exec);
     parallel_for(exec, positions.size(), [&](std::size_t i) {
         if (valid[i]) return;
         thread_local std::vector<Neighbour> found;

@@ -148,14 +148,14 @@ std::vector<Vec3> smoothed_positions(const std::vector<Vec3>& positions,
     for (int round = 0; round < 2; ++round) {
         std::optional<KnnIndex> own; // each round reads the previous one's positions
         const KnnIndex& index =
-            round == 0 && index_of_positions ? *index_of_positions : own.emplace(smoothed);
+            round == 0 && index_of_positions ? *index_of_positions : own.emplace(smoothed, exec);
         smooth(smoothed, normals, {index, reach}, true, options, exec, report);
     }
     return smoothed;
 }
 
 CsrGraph neighbour_graph(const std::vector<Vec3>& positions, int k, const Execution& exec) {
-    const KnnIndex index(positions);
+    const KnnIndex index(positions, exec);
     return symmetric_union(knn_table(index, k, exec), positions.size(), exec);
 }
 
@@ -177,7 +177,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     // HRsR with input normals collapses the unsmoothed positions and smooths only the collapsed
     // cloud (§7): no smoothed copy of the full cloud; its kd-tree only serves the normal check.
     if (purpose == PrepareFor::Collapse && !estimated && !graph) {
-        const KnnIndex index(cloud.positions);
+        const KnnIndex index(cloud.positions, exec);
         check_input_orientation(index, cloud.normals, exec, report);
         if (tangent && noisy(cloud, index, exec, report)) {
             // D-33: noise moved the points along the surface too, away from where their input
@@ -196,7 +196,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
 
     // Schedule of §4.4: each round reads the previous round's positions through a kd-tree
     // built on them; with estimated normals they are re-estimated after each round.
-    auto index = std::make_unique<KnnIndex>(cloud.smoothed);
+    auto index = std::make_unique<KnnIndex>(cloud.smoothed, exec);
     NeighbourReach reach; // the rounds below ask the same k of the same points, moved
     if (estimated)
         cloud.normals = estimate(cloud.smoothed, *index, options, exec, report, reach);
@@ -212,7 +212,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
         for (int round = 0; round < 2; ++round) {
             smooth(cloud.smoothed, cloud.normals, {*index, reach}, !estimated, options, exec,
                    report);
-            index = std::make_unique<KnnIndex>(cloud.smoothed);
+            index = std::make_unique<KnnIndex>(cloud.smoothed, exec);
             if (estimated)
                 cloud.normals = estimate(cloud.smoothed, *index, options, exec, report, reach);
         }

@@ -38,7 +38,7 @@ std::vector<LocalTriangle> reconstruct_component(const ComponentCloud& cloud,
     Stopwatch clock(stats);
 
     begin(exec, "candidate graph");
-    const KnnIndex index(cloud.smoothed);
+    const KnnIndex index(cloud.smoothed, exec);
     const CandidateGraph graph = build_candidate_graph(cloud, index, pre, exec);
     const std::vector<CandidateEdge> candidates =
         face_split_candidates(graph, cloud, pre.distance, exec);

@@ -1,0 +1,240 @@
+// vcglib's kd-tree as KnnIndex holds it: which point each slot holds, and a build whose subtrees
+// below the top levels run in parallel, giving the tree vcglib's constructor gives.
+#pragma once
+
+#include "parallel.h"
+#include "point_set.h"
+
+#include <vcg/space/index/kdtree/kdtree.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace hrsr {
+
+// Leaves of 32 points instead of vcglib's 16: fewer nodes to descend for the same points; on the
+// 800k dragon sample queries at k = 1, 8, 71 and 193 took 6–18 % less (docs/BENCHMARKS.md,
+// session 22).
+inline constexpr unsigned kPointsPerLeaf = 32;
+
+/// vcglib's tree (its protected members have the same names and meanings in the vcglib of
+/// MeshLab 2020.09, 2022.02 and 2025.07).
+struct KdTreeWithSlots : vcg::KdTree<double> {
+    using Base = vcg::KdTree<double>;
+    using Base::KdTree;
+
+    /// The tree of `points` (at least one), with leaves of kPointsPerLeaf: vcglib's constructor,
+    /// or where this vcglib's build can be split by levels and the cloud is large, the same
+    /// tree (the same split at every node, the same points in every leaf, in the same slot
+    /// order) with the subtrees below the top levels built in parallel. Only the numbering of
+    /// the nodes differs, which no query depends on. Where vcglib's split reads past a node's
+    /// points (all of them below its split value rounded to float: copies of a point at a
+    /// coordinate no float holds), it reads slots that no coordinate is below instead of the
+    /// array's end; at a node of the top levels the whole tree is then built by vcglib's
+    /// createTree alone. The tree is the same for any thread count.
+    KdTreeWithSlots(const std::vector<Vec3>& points, const Execution& exec);
+
+    const std::vector<unsigned int>& slot_points() const { return mIndices; }
+
+    /// Whether this vcglib's build can be split by levels: createTree(node, start, end, level)
+    /// stops at targetMaxDepth and returns the depth it reached (vcglib of MeshLab 2020.09).
+    template <class Self = KdTreeWithSlots>
+    static auto splits_by_levels(Self* t)
+        -> decltype(int(t->createTree(0U, 0U, 0U, 0U)), t->targetMaxDepth = 0U,
+                    t->targetCellSize = 0U, t->numLevel = 0U, t->mAABB.Add(VectorType()),
+                    std::true_type());
+    static std::false_type splits_by_levels(...);
+    static constexpr bool builds_by_levels() {
+        return decltype(splits_by_levels(static_cast<KdTreeWithSlots*>(nullptr)))::value;
+    }
+
+private:
+    /// Below this many points the sequential build is as fast.
+    static constexpr std::size_t kParallelFrom = 1U << 16;
+
+    /// Levels built by vcglib's createTree on the whole cloud (2^5 subtrees below them):
+    /// fixed, so that the tree does not depend on the thread count.
+    static constexpr unsigned kTopLevels = 5;
+
+    static bool built_whole(const std::vector<Vec3>& points) {
+        return !builds_by_levels() || points.size() < kParallelFrom;
+    }
+
+    /// Runs createTree(0, 0, size, level) on t's slots [0, size) with slots past them that no
+    /// coordinate is below: where vcglib's split reads past a node's points (all below the
+    /// split value rounded to float), and the ranges it then makes read on, one slot further a
+    /// level, they stay in the array. The slots past `size` are removed after.
+    template <class Self>
+    static int create_tree_padded(Self& t, unsigned size, unsigned level) {
+        const double inf = std::numeric_limits<double>::infinity();
+        const std::size_t pad = std::size_t(t.targetMaxDepth) + 2;
+        t.mPoints.resize(size);
+        t.mIndices.resize(size);
+        t.mPoints.resize(size + pad, VectorType(inf, inf, inf));
+        t.mIndices.resize(size + pad, 0U);
+        t.mNodes.assign(1, typename Base::Node());
+        t.mNodes.back().leaf = 0;
+        const int levels = t.createTree(0, 0, size, level);
+        t.mPoints.resize(size);
+        t.mIndices.resize(size);
+        return levels;
+    }
+
+    // A slot range [start, end) at a leaf of the top levels.
+    struct Stretch {
+        std::size_t node;
+        unsigned start, end;
+        unsigned depth; ///< of the leaf, the root's being 1
+    };
+
+    // The leaves under `node` in depth-first order (left first), their ranges from their starts
+    // (vcglib keeps a leaf's size in 16 bits; the leaves tile the slots in this order).
+    template <class Self>
+    static void leaves(const Self& t, std::size_t node, unsigned depth, std::vector<Stretch>& out) {
+        const auto& n = t.mNodes[node];
+        if (n.leaf) {
+            out.push_back({node, n.start, 0, depth});
+            return;
+        }
+        leaves(t, n.firstChildId, depth + 1, out);
+        leaves(t, n.firstChildId + 1, depth + 1, out);
+    }
+
+    // A subtree below the top levels: its slots, then its nodes (root first, children
+    // numbered from 1) and depth as createTree made them.
+    struct Subtree {
+        std::vector<typename Base::Node> nodes;
+        int levels = 0;
+    };
+
+    // The slots [0, n) hold the points in order and the box is theirs (vcglib's constructor's
+    // first loop), by blocks: the box's min and max do not depend on the order.
+    template <class Self>
+    static void copy_points(Self& t, const std::vector<Vec3>& points, const Execution& exec) {
+        const auto n = unsigned(points.size());
+        const std::size_t room = std::size_t(n) + t.targetMaxDepth + 2; // create_tree_padded
+        t.mPoints.reserve(room);
+        t.mIndices.reserve(room);
+        t.mPoints.resize(n);
+        t.mIndices.resize(n);
+        std::vector<AxisAlignedBoxType> boxes(block_count(n, kCheapBlock));
+        parallel_for_blocks(exec, n, kCheapBlock,
+                            [&](std::size_t b, std::size_t first, std::size_t end) {
+                                boxes[b].Set(points[first]);
+                                for (std::size_t i = first; i < end; ++i) {
+                                    t.mPoints[i] = points[i];
+                                    t.mIndices[i] = unsigned(i);
+                                    boxes[b].Add(points[i]);
+                                }
+                            });
+        t.mAABB = boxes.front();
+        for (const AxisAlignedBoxType& b : boxes) t.mAABB.Add(b);
+    }
+
+    // The leaves of the top levels with their ranges; empty where the ranges do not tile the
+    // slots with the sizes vcglib keeps (a split read past its node).
+    template <class Self>
+    static std::vector<Stretch> tiled_leaves(const Self& t, unsigned n) {
+        std::vector<Stretch> stretches;
+        leaves(t, 0, 1, stretches);
+        for (std::size_t s = 0; s < stretches.size(); ++s) {
+            Stretch& l = stretches[s];
+            l.end = s + 1 < stretches.size() ? stretches[s + 1].start : n;
+            if (l.start > l.end ||
+                t.mNodes[l.node].size != static_cast<unsigned short>(l.end - l.start))
+                return {};
+        }
+        return stretches;
+    }
+
+    // The leaves the stop at depth `stop` made: at the stop's depth, too large for a leaf, and
+    // not one of the two of a split that left one side empty (those stay leaves at any depth).
+    template <class Self>
+    static std::vector<Stretch> stopped_leaves(const Self& t, const std::vector<Stretch>& all,
+                                               unsigned stop) {
+        std::vector<Stretch> stopped;
+        if (t.targetMaxDepth <= stop) return stopped;
+        for (std::size_t s = 0; s < all.size(); ++s) {
+            const Stretch& l = all[s];
+            if (l.depth != stop + 1 || l.end - l.start <= t.targetCellSize) continue;
+            const Stretch& sibling = all[l.node % 2 == 1 ? s + 1 : s - 1]; // left ids are odd
+            if (sibling.end > sibling.start) stopped.push_back(l);
+        }
+        return stopped;
+    }
+
+    // The subtree createTree would build at leaf l, in a tree of its own slots; the slots come
+    // back into t's reordered as its splits left them.
+    template <class Self>
+    static Subtree grow(Self& t, const Stretch& l, const std::vector<Vec3>& points) {
+        Self sub(vcg::ConstDataWrapper<Vec3>(points.data(), 1), t.targetCellSize, t.targetMaxDepth);
+        const unsigned size = l.end - l.start;
+        sub.mPoints.reserve(std::size_t(size) + t.targetMaxDepth + 2); // create_tree_padded
+        sub.mIndices.reserve(std::size_t(size) + t.targetMaxDepth + 2);
+        sub.mPoints.assign(t.mPoints.begin() + l.start, t.mPoints.begin() + l.end);
+        sub.mIndices.assign(t.mIndices.begin() + l.start, t.mIndices.begin() + l.end);
+        Subtree out;
+        out.levels = create_tree_padded(sub, size, l.depth);
+        std::copy(sub.mPoints.begin(), sub.mPoints.end(), t.mPoints.begin() + l.start);
+        std::copy(sub.mIndices.begin(), sub.mIndices.end(), t.mIndices.begin() + l.start);
+        out.nodes = std::move(sub.mNodes);
+        return out;
+    }
+
+    // The subtree's nodes appended to t's, its root replacing leaf l, renumbered.
+    template <class Self>
+    static void append(Self& t, const Stretch& l, const Subtree& sub) {
+        const auto offset = unsigned(t.mNodes.size()) - 1; // sub's node 1 goes to size()
+        const auto renumbered = [&](typename Base::Node node) {
+            if (node.leaf)
+                node.start += l.start;
+            else
+                node.firstChildId = node.firstChildId + offset;
+            return node;
+        };
+        t.mNodes[l.node] = renumbered(sub.nodes[0]);
+        for (std::size_t k = 1; k < sub.nodes.size(); ++k)
+            t.mNodes.push_back(renumbered(sub.nodes[k]));
+    }
+
+    template <class Self = KdTreeWithSlots>
+    void build_by_levels(const std::vector<Vec3>& points, const Execution& exec) {
+        Self& t = *static_cast<Self*>(this);
+        const auto n = unsigned(points.size());
+        copy_points(t, points, exec);
+        // The top levels by vcglib's own createTree, stopped at kTopLevels.
+        const unsigned max_depth = t.targetMaxDepth, stop = std::min(kTopLevels, max_depth);
+        t.targetMaxDepth = stop;
+        int levels = create_tree_padded(t, n, 1);
+        t.targetMaxDepth = max_depth;
+        const std::vector<Stretch> stretches = tiled_leaves(t, n);
+        if (stretches.empty()) { // a split read past its node: the whole tree by createTree
+            copy_points(t, points, exec);
+            t.numLevel = unsigned(create_tree_padded(t, n, 1));
+            return;
+        }
+        const std::vector<Stretch> stopped = stopped_leaves(t, stretches, stop);
+        std::vector<Subtree> subtrees(stopped.size());
+        parallel_for(
+            exec, stopped.size(), [&](std::size_t g) { subtrees[g] = grow(t, stopped[g], points); },
+            1);
+        for (std::size_t g = 0; g < stopped.size(); ++g) {
+            append(t, stopped[g], subtrees[g]);
+            levels = std::max(levels, subtrees[g].levels);
+        }
+        t.numLevel = unsigned(levels);
+    }
+};
+
+inline KdTreeWithSlots::KdTreeWithSlots(const std::vector<Vec3>& points, const Execution& exec)
+    : Base(vcg::ConstDataWrapper<Vec3>(points.data(), built_whole(points) ? int(points.size()) : 1),
+           kPointsPerLeaf) {
+    if constexpr (builds_by_levels()) {
+        if (!built_whole(points)) build_by_levels(points, exec);
+    }
+}
+
+} // namespace hrsr
