@@ -44,8 +44,8 @@ struct KdTreeWithSlots : vcg::KdTree<double> {
     template <class Self = KdTreeWithSlots>
     static auto splits_by_levels(Self* t)
         -> decltype(int(t->createTree(0U, 0U, 0U, 0U)), t->targetMaxDepth = 0U,
-                    t->targetCellSize = 0U, t->numLevel = 0U, t->mAABB.Add(VectorType()),
-                    std::true_type());
+                    t->targetCellSize = 0U, t->numLevel = 0U,
+                    t->mAABB.Add(typename Self::VectorType()), std::true_type());
     static std::false_type splits_by_levels(...);
     static constexpr bool builds_by_levels() {
         return decltype(splits_by_levels(static_cast<KdTreeWithSlots*>(nullptr)))::value;
@@ -73,9 +73,9 @@ private:
         const std::size_t pad = std::size_t(t.targetMaxDepth) + 2;
         t.mPoints.resize(size);
         t.mIndices.resize(size);
-        t.mPoints.resize(size + pad, VectorType(inf, inf, inf));
+        t.mPoints.resize(size + pad, typename Self::VectorType(inf, inf, inf));
         t.mIndices.resize(size + pad, 0U);
-        t.mNodes.assign(1, typename Base::Node());
+        t.mNodes.assign(1, typename Self::Node());
         t.mNodes.back().leaf = 0;
         const int levels = t.createTree(0, 0, size, level);
         t.mPoints.resize(size);
@@ -103,10 +103,11 @@ private:
         leaves(t, n.firstChildId + 1, depth + 1, out);
     }
 
-    // A subtree below the top levels: its slots, then its nodes (root first, children
-    // numbered from 1) and depth as createTree made them.
+    // A subtree below the top levels: its nodes (root first, children numbered from 1) and
+    // the depth createTree reached there.
+    template <class Self>
     struct Subtree {
-        std::vector<typename Base::Node> nodes;
+        std::vector<typename Self::Node> nodes;
         int levels = 0;
     };
 
@@ -120,7 +121,7 @@ private:
         t.mIndices.reserve(room);
         t.mPoints.resize(n);
         t.mIndices.resize(n);
-        std::vector<AxisAlignedBoxType> boxes(block_count(n, kCheapBlock));
+        std::vector<typename Self::AxisAlignedBoxType> boxes(block_count(n, kCheapBlock));
         parallel_for_blocks(exec, n, kCheapBlock,
                             [&](std::size_t b, std::size_t first, std::size_t end) {
                                 boxes[b].Set(points[first]);
@@ -131,7 +132,7 @@ private:
                                 }
                             });
         t.mAABB = boxes.front();
-        for (const AxisAlignedBoxType& b : boxes) t.mAABB.Add(b);
+        for (const auto& b : boxes) t.mAABB.Add(b);
     }
 
     // The leaves of the top levels with their ranges; empty where the ranges do not tile the
@@ -169,14 +170,14 @@ private:
     // The subtree createTree would build at leaf l, in a tree of its own slots; the slots come
     // back into t's reordered as its splits left them.
     template <class Self>
-    static Subtree grow(Self& t, const Stretch& l, const std::vector<Vec3>& points) {
+    static Subtree<Self> grow(Self& t, const Stretch& l, const std::vector<Vec3>& points) {
         Self sub(vcg::ConstDataWrapper<Vec3>(points.data(), 1), t.targetCellSize, t.targetMaxDepth);
         const unsigned size = l.end - l.start;
         sub.mPoints.reserve(std::size_t(size) + t.targetMaxDepth + 2); // create_tree_padded
         sub.mIndices.reserve(std::size_t(size) + t.targetMaxDepth + 2);
         sub.mPoints.assign(t.mPoints.begin() + l.start, t.mPoints.begin() + l.end);
         sub.mIndices.assign(t.mIndices.begin() + l.start, t.mIndices.begin() + l.end);
-        Subtree out;
+        Subtree<Self> out;
         out.levels = create_tree_padded(sub, size, l.depth);
         std::copy(sub.mPoints.begin(), sub.mPoints.end(), t.mPoints.begin() + l.start);
         std::copy(sub.mIndices.begin(), sub.mIndices.end(), t.mIndices.begin() + l.start);
@@ -186,9 +187,9 @@ private:
 
     // The subtree's nodes appended to t's, its root replacing leaf l, renumbered.
     template <class Self>
-    static void append(Self& t, const Stretch& l, const Subtree& sub) {
+    static void append(Self& t, const Stretch& l, const Subtree<Self>& sub) {
         const auto offset = unsigned(t.mNodes.size()) - 1; // sub's node 1 goes to size()
-        const auto renumbered = [&](typename Base::Node node) {
+        const auto renumbered = [&](typename Self::Node node) {
             if (node.leaf)
                 node.start += l.start;
             else
@@ -217,7 +218,7 @@ private:
             return;
         }
         const std::vector<Stretch> stopped = stopped_leaves(t, stretches, stop);
-        std::vector<Subtree> subtrees(stopped.size());
+        std::vector<Subtree<Self>> subtrees(stopped.size());
         parallel_for(
             exec, stopped.size(), [&](std::size_t g) { subtrees[g] = grow(t, stopped[g], points); },
             1);
