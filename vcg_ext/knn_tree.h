@@ -26,15 +26,15 @@ struct KdTreeWithSlots : vcg::KdTree<double> {
     using Base = vcg::KdTree<double>;
     using Base::KdTree;
 
-    /// The tree of `points` (at least one), with leaves of kPointsPerLeaf: vcglib's constructor,
-    /// or where this vcglib's build can be split by levels and the cloud is large, the same
-    /// tree (the same split at every node, the same points in every leaf, in the same slot
-    /// order) with the subtrees below the top levels built in parallel. Only the numbering of
-    /// the nodes differs, which no query depends on. Where vcglib's split reads past a node's
-    /// points (all of them below its split value rounded to float: copies of a point at a
-    /// coordinate no float holds), it reads slots that no coordinate is below instead of the
-    /// array's end; at a node of the top levels the whole tree is then built by vcglib's
-    /// createTree alone. The tree is the same for any thread count.
+    /// The tree of `points` (at least one), with leaves of kPointsPerLeaf: vcglib's tree, by
+    /// its createTree on the whole cloud, or where the cloud is large with the subtrees below
+    /// the top levels built in parallel (the same split at every node, the same points in every
+    /// leaf, in the same slot order; only the nodes' numbers differ, which no query depends
+    /// on). Where vcglib's split reads past a node's points (all of them below its split value
+    /// rounded to float: copies of a point at a coordinate no float holds) it reads padding,
+    /// not past the arrays, and a tree whose leaves then do not tile the slots, or that has a
+    /// leaf too large for vcglib's 16-bit size, is built again by create_tree_guarded. The tree
+    /// is the same for any thread count. Another vcglib (no createTree to call): its constructor.
     KdTreeWithSlots(const std::vector<Vec3>& points, const Execution& exec);
 
     const std::vector<unsigned int>& slot_points() const { return mIndices; }
@@ -58,10 +58,6 @@ private:
     /// Levels built by vcglib's createTree on the whole cloud (2^5 subtrees below them):
     /// fixed, so that the tree does not depend on the thread count.
     static constexpr unsigned kTopLevels = 5;
-
-    static bool built_whole(const std::vector<Vec3>& points) {
-        return !builds_by_levels() || points.size() < kParallelFrom;
-    }
 
     /// Runs createTree(0, 0, size, level) on t's slots [0, size) with slots past them that no
     /// coordinate is below: where vcglib's split reads past a node's points (all below the
@@ -201,6 +197,83 @@ private:
             t.mNodes.push_back(renumbered(sub.nodes[k]));
     }
 
+    // Whether the leaves tile the slots [0, n) in depth-first order with the sizes they keep
+    // (vcglib's 16 bits): not where a split read past its node, nor for a leaf of 65,536
+    // points or more.
+    template <class Self>
+    static bool leaves_tile(const Self& t, unsigned n) {
+        std::vector<Stretch> stretches;
+        leaves(t, 0, 1, stretches);
+        unsigned next = 0;
+        for (const Stretch& l : stretches) {
+            if (l.start != next) return false;
+            next += t.mNodes[l.node].size;
+        }
+        return next == n;
+    }
+
+    // createTree's tree built again where its split broke it (its float comparison: every point
+    // of a node below the split value; copies of a point at a coordinate no float holds): the
+    // same box, axis and split value, the points parted by the value in double, and a node
+    // whose points all lie on one side (all within a few units in the last place) halved by
+    // slots, its split value still a bound for the query's pruning to within those units.
+    template <class Self>
+    static int create_tree_guarded(Self& t, unsigned node, unsigned start, unsigned end,
+                                   unsigned level) {
+        typename Self::AxisAlignedBoxType box;
+        box.Set(t.mPoints[start]);
+        for (unsigned i = start + 1; i < end; ++i) box.Add(t.mPoints[i]);
+        const auto diag = box.max - box.min;
+        const unsigned dim =
+            diag[0] > diag[1] ? (diag[0] > diag[2] ? 0 : 2) : (diag[1] > diag[2] ? 1 : 2);
+        const double split = 0.5 * (box.max[dim] + box.min[dim]);
+        unsigned mid = start;
+        for (unsigned i = start; i < end; ++i)
+            if (t.mPoints[i][dim] < split) {
+                std::swap(t.mPoints[i], t.mPoints[mid]);
+                std::swap(t.mIndices[i], t.mIndices[mid]);
+                ++mid;
+            }
+        if (mid == start || mid == end) mid = start + (end - start) / 2;
+        const auto first = unsigned(t.mNodes.size());
+        t.mNodes[node].dim = dim;
+        t.mNodes[node].splitValue = split;
+        t.mNodes[node].firstChildId = first;
+        t.mNodes[node].leaf = 0;
+        t.mNodes.resize(t.mNodes.size() + 2);
+        int levels = int(level);
+        const unsigned from[2] = {start, mid}, to[2] = {mid, end};
+        for (unsigned c = 0; c < 2; ++c) {
+            auto& child = t.mNodes[first + c];
+            if (to[c] - from[c] <= t.targetCellSize || level >= t.targetMaxDepth) {
+                child.leaf = 1;
+                child.start = from[c];
+                child.size = static_cast<unsigned short>(to[c] - from[c]);
+            } else {
+                child.leaf = 0;
+                levels =
+                    std::max(levels, create_tree_guarded(t, first + c, from[c], to[c], level + 1));
+            }
+        }
+        return levels;
+    }
+
+    template <class Self = KdTreeWithSlots>
+    void build(const std::vector<Vec3>& points, const Execution& exec) {
+        Self& t = *static_cast<Self*>(this);
+        const auto n = unsigned(points.size());
+        if (n < kParallelFrom) { // vcglib's constructor, padded
+            copy_points(t, points, exec);
+            t.numLevel = unsigned(create_tree_padded(t, n, 1));
+        } else {
+            build_by_levels(points, exec);
+        }
+        if (leaves_tile(t, n)) return;
+        copy_points(t, points, exec); // n > 1: one point is always a leaf that tiles
+        t.mNodes.assign(1, typename Self::Node());
+        t.numLevel = unsigned(create_tree_guarded(t, 0, 0, n, 1));
+    }
+
     template <class Self = KdTreeWithSlots>
     void build_by_levels(const std::vector<Vec3>& points, const Execution& exec) {
         Self& t = *static_cast<Self*>(this);
@@ -231,11 +304,9 @@ private:
 };
 
 inline KdTreeWithSlots::KdTreeWithSlots(const std::vector<Vec3>& points, const Execution& exec)
-    : Base(vcg::ConstDataWrapper<Vec3>(points.data(), built_whole(points) ? int(points.size()) : 1),
+    : Base(vcg::ConstDataWrapper<Vec3>(points.data(), builds_by_levels() ? 1 : int(points.size())),
            kPointsPerLeaf) {
-    if constexpr (builds_by_levels()) {
-        if (!built_whole(points)) build_by_levels(points, exec);
-    }
+    if constexpr (builds_by_levels()) build(points, exec);
 }
 
 } // namespace hrsr
