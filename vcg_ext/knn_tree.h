@@ -131,12 +131,13 @@ private:
         for (const auto& b : boxes) t.mAABB.Add(b);
     }
 
-    // The leaves of the top levels with their ranges; empty where the ranges do not tile the
-    // slots with the sizes vcglib keeps (a split read past its node).
+    // The leaves with their ranges; empty where the ranges do not tile the slots [0, n) with
+    // the sizes vcglib keeps in 16 bits (a split read past its node).
     template <class Self>
     static std::vector<Stretch> tiled_leaves(const Self& t, unsigned n) {
         std::vector<Stretch> stretches;
         leaves(t, 0, 1, stretches);
+        if (stretches.front().start != 0) return {};
         for (std::size_t s = 0; s < stretches.size(); ++s) {
             Stretch& l = stretches[s];
             l.end = s + 1 < stretches.size() ? stretches[s + 1].start : n;
@@ -197,19 +198,14 @@ private:
             t.mNodes.push_back(renumbered(sub.nodes[k]));
     }
 
-    // Whether the leaves tile the slots [0, n) in depth-first order with the sizes they keep
-    // (vcglib's 16 bits): not where a split read past its node, nor for a leaf of 65,536
-    // points or more.
+    // Whether the leaves tile the slots [0, n) with the sizes they keep: not where a split read
+    // past its node, nor for a leaf of 65,536 points or more (its size does not fit 16 bits).
     template <class Self>
     static bool leaves_tile(const Self& t, unsigned n) {
-        std::vector<Stretch> stretches;
-        leaves(t, 0, 1, stretches);
-        unsigned next = 0;
-        for (const Stretch& l : stretches) {
-            if (l.start != next) return false;
-            next += t.mNodes[l.node].size;
-        }
-        return next == n;
+        const std::vector<Stretch> stretches = tiled_leaves(t, n);
+        return !stretches.empty() &&
+               std::all_of(stretches.begin(), stretches.end(),
+                           [](const Stretch& l) { return l.end - l.start <= 0xffffU; });
     }
 
     // createTree's tree built again where its split broke it (its float comparison: every point
@@ -262,20 +258,23 @@ private:
     void build(const std::vector<Vec3>& points, const Execution& exec) {
         Self& t = *static_cast<Self*>(this);
         const auto n = unsigned(points.size());
+        bool built = true;
         if (n < kParallelFrom) { // vcglib's constructor, padded
             copy_points(t, points, exec);
             t.numLevel = unsigned(create_tree_padded(t, n, 1));
         } else {
-            build_by_levels(points, exec);
+            built = build_by_levels(points, exec);
         }
-        if (leaves_tile(t, n)) return;
+        if (built && leaves_tile(t, n)) return;
         copy_points(t, points, exec); // n > 1: one point is always a leaf that tiles
         t.mNodes.assign(1, typename Self::Node());
         t.numLevel = unsigned(create_tree_guarded(t, 0, 0, n, 1));
     }
 
+    // False where a split of the top levels read past its node (the tree is then unfinished:
+    // createTree would break the same way on the whole cloud).
     template <class Self = KdTreeWithSlots>
-    void build_by_levels(const std::vector<Vec3>& points, const Execution& exec) {
+    bool build_by_levels(const std::vector<Vec3>& points, const Execution& exec) {
         Self& t = *static_cast<Self*>(this);
         const auto n = unsigned(points.size());
         copy_points(t, points, exec);
@@ -285,11 +284,7 @@ private:
         int levels = create_tree_padded(t, n, 1);
         t.targetMaxDepth = max_depth;
         const std::vector<Stretch> stretches = tiled_leaves(t, n);
-        if (stretches.empty()) { // a split read past its node: the whole tree by createTree
-            copy_points(t, points, exec);
-            t.numLevel = unsigned(create_tree_padded(t, n, 1));
-            return;
-        }
+        if (stretches.empty()) return false;
         const std::vector<Stretch> stopped = stopped_leaves(t, stretches, stop);
         std::vector<Subtree<Self>> subtrees(stopped.size());
         parallel_for(
@@ -300,6 +295,7 @@ private:
             levels = std::max(levels, subtrees[g].levels);
         }
         t.numLevel = unsigned(levels);
+        return true;
     }
 };
 

@@ -1323,13 +1323,10 @@ private:
 
     std::vector<std::uint32_t> faces_of(std::uint32_t v) const {
         std::vector<std::uint32_t> faces;
-        for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
-            if (alive_[at_.corner[e] / 3]) faces.push_back(at_.corner[e] / 3);
-        if (!touched_[v]) return faces; // no face was ever added at v
-        const auto it = added_at_.find(v);
-        if (it != added_at_.end())
-            for (std::uint32_t f : it->second)
-                if (alive_[f]) faces.push_back(f);
+        any_face_index(v, [&](std::uint32_t f) {
+            faces.push_back(f);
+            return false;
+        });
         return faces;
     }
 
@@ -1337,16 +1334,10 @@ private:
     // duplicate tests run inside the fills' search).
     template <class Test>
     bool any_face(std::uint32_t v, Test&& test) const {
-        for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
-            if (alive_[at_.corner[e] / 3] && test(triangles_[at_.corner[e] / 3])) return true;
-        if (!touched_[v]) return false; // no face was ever added at v
-        const auto it = added_at_.find(v);
-        if (it == added_at_.end()) return false;
-        return std::any_of(it->second.begin(), it->second.end(),
-                           [&](std::uint32_t f) { return alive_[f] && test(triangles_[f]); });
+        return any_face_index(v, [&](std::uint32_t f) { return test(triangles_[f]); });
     }
 
-    // any_face() with the face's number.
+    // any_face() with the face's number: the given faces first, then those added.
     template <class Test>
     bool any_face_index(std::uint32_t v, Test&& test) const {
         for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
