@@ -14,10 +14,14 @@ double side(const TangentFrame& f, const Vec3& a, const Vec3& b, const Vec3& p) 
     return bx * py - by * px;
 }
 
+TangentFrame plane_frame(const Vec3& plane_normal) {
+    const double length = plane_normal.Norm();
+    return tangent_frame(length > 0 ? plane_normal / length : plane_normal);
+}
+
 bool cross_in_plane(const Vec3& plane_normal, const Vec3& a, const Vec3& b, const Vec3& c,
                     const Vec3& d) {
-    const double length = plane_normal.Norm();
-    const TangentFrame f = tangent_frame(length > 0 ? plane_normal / length : plane_normal);
+    const TangentFrame f = plane_frame(plane_normal);
     return side(f, a, b, c) * side(f, a, b, d) <= 0 && side(f, c, d, a) * side(f, c, d, b) <= 0;
 }
 
@@ -26,6 +30,22 @@ bool cross_in_plane(const Vec3& plane_normal, const Vec3& a, const Vec3& b, cons
 bool segments_cross(const SurfaceSegment& ab, const SurfaceSegment& cd) {
     return cross_in_plane((ab.na + ab.nb) * 0.5, ab.a, ab.b, cd.a, cd.b) ||
            cross_in_plane((cd.na + cd.nb) * 0.5, ab.a, ab.b, cd.a, cd.b);
+}
+
+SegmentCrossings::SegmentCrossings(const SurfaceSegment& ab)
+    : a_(ab.a), b_(ab.b), frame_(plane_frame((ab.na + ab.nb) * 0.5)), bx_((b_ - a_).dot(frame_.t1)),
+      by_((b_ - a_).dot(frame_.t2)) {}
+
+// The same arithmetic as segments_cross, in the same order: the same answers to the bit.
+bool SegmentCrossings::crossed_by(const SurfaceSegment& cd) const {
+    const auto side_of_ab = [&](const Vec3& p) {
+        const double px = (p - a_).dot(frame_.t1), py = (p - a_).dot(frame_.t2);
+        return bx_ * py - by_ * px;
+    };
+    if (side_of_ab(cd.a) * side_of_ab(cd.b) <= 0 &&
+        side(frame_, cd.a, cd.b, a_) * side(frame_, cd.a, cd.b, b_) <= 0)
+        return true;
+    return cross_in_plane((cd.na + cd.nb) * 0.5, a_, b_, cd.a, cd.b);
 }
 
 namespace {

@@ -67,6 +67,19 @@ struct SurfaceSegment {
 /// counts as crossing (conservative). Segments must not share an endpoint.
 bool segments_cross(const SurfaceSegment& ab, const SurfaceSegment& cd);
 
+/// segments_cross(ab, cd) for one ab and many cd: ab's plane and its direction in that plane are
+/// worked out once (RsR's geometry check tests each candidate against every edge near it).
+class SegmentCrossings {
+public:
+    explicit SegmentCrossings(const SurfaceSegment& ab);
+    bool crossed_by(const SurfaceSegment& cd) const;
+
+private:
+    Vec3 a_, b_;
+    TangentFrame frame_; ///< of ab's plane
+    double bx_, by_;     ///< b − a in that frame
+};
+
 /// Largest interior angle of triangle abc, in radians (π for degenerate triangles).
 double largest_angle(const Vec3& a, const Vec3& b, const Vec3& c);
 

@@ -1,6 +1,7 @@
 // The face split's parallel look-ahead (rsr/face_split.cpp) must give what taking the candidates
 // one by one gives (look-ahead 1): the same triangles, the same rotation and the same counts, for
 // any thread count.
+#include "geometry.h"
 #include "knn.h"
 #include "options.h"
 #include "rsr/candidate_graph.h"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <random>
 #include <vector>
 
 namespace hrsr {
@@ -24,6 +26,8 @@ struct Split {
     std::unique_ptr<rsr::Faces> faces_of;             ///< its faces
     std::vector<rsr::LocalTriangle> triangles;
     rsr::FaceSplitStats stats;
+    std::size_t candidates = 0;
+    std::size_t tree_edge_candidates = 0; ///< candidates already edges before the phase
 };
 
 // The neighbours of each vertex, in rotation order.
@@ -49,6 +53,9 @@ Split split(const rsr::ComponentCloud& cloud, const KnnIndex& index, int threads
     rsr::RotationSystem& rotation = *s.embedded;
     for (std::uint32_t v : tree.order)
         if (tree.parent[v] != SpanningForest::kRoot) rotation.insert_edge(tree.parent[v], v);
+    s.candidates = candidates.size();
+    for (const rsr::CandidateEdge& c : candidates)
+        s.tree_edge_candidates += tree.parent[c.i] == c.j || tree.parent[c.j] == c.i;
     s.faces_of = std::make_unique<rsr::Faces>(rotation);
     rsr::Faces& faces = *s.faces_of;
     faces.label_all();
@@ -80,6 +87,12 @@ TEST(FaceSplit, LookingAheadInParallelTakesTheCandidatesAsOneByOne) {
     EXPECT_GT(one_by_one.stats.rejected_topology, 0u);
     EXPECT_GT(one_by_one.stats.rejected_geometry, 0u);
     EXPECT_GT(one_by_one.stats.rejected_triangles, 0u);
+    // Every candidate is inserted or rejected once, but for the tree's edges (passed over).
+    const rsr::FaceSplitStats& n = one_by_one.stats;
+    EXPECT_GT(one_by_one.tree_edge_candidates, 1000u);
+    EXPECT_EQ(n.inserted + n.rejected_topology + n.rejected_geometry + n.rejected_triangles +
+                  one_by_one.tree_edge_candidates,
+              one_by_one.candidates);
     for (std::size_t look_ahead : {std::size_t(64), rsr::kFaceSplitLookAhead})
         for (int threads : {1, 2, 8}) {
             SCOPED_TRACE(::testing::Message()
@@ -113,6 +126,41 @@ TEST(FaceSplit, AVertexSurroundedByTrianglesSharesNoFaceWithOneNotAdjacent) {
     }
     EXPECT_GT(surrounded, rotation.vertex_count() / 2);
     EXPECT_GT(checked, 10 * surrounded);
+}
+
+// The geometry check tests a candidate against each edge near it with the candidate's plane
+// worked out once (SegmentCrossings): every answer must be segments_cross's, also where a point
+// lies on the other segment or the two are collinear (integer grids), and with normals apart.
+TEST(FaceSplit, OneSegmentAgainstManyAnswersAsThePairTest) {
+    std::mt19937 rng(20261130);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> grid(-2, 2);
+    const auto normal = [&](double tilt) {
+        Vec3 n(tilt * unit(rng), tilt * unit(rng), 1.0);
+        return n / n.Norm();
+    };
+    std::size_t crossing = 0, apart = 0;
+    for (int on_grid : {0, 1})
+        for (double tilt : {0.0, 0.3, 1.5})
+            for (int set = 0; set < 200; ++set) {
+                const auto point = [&] {
+                    return on_grid ? Vec3(grid(rng), grid(rng), 0.0)
+                                   : Vec3(unit(rng), unit(rng), 0.2 * unit(rng));
+                };
+                const Vec3 a = point(), b = point(), na = normal(tilt), nb = normal(tilt);
+                if (a == b) continue;
+                const SegmentCrossings ab({a, b, na, nb});
+                for (int other = 0; other < 30; ++other) {
+                    const Vec3 c = point(), d = point(), nc = normal(tilt), nd = normal(tilt);
+                    if (c == d || c == a || c == b || d == a || d == b) continue;
+                    const bool expected = segments_cross({a, b, na, nb}, {c, d, nc, nd});
+                    ASSERT_EQ(ab.crossed_by({c, d, nc, nd}), expected)
+                        << "set " << set << ", grid " << on_grid << ", tilt " << tilt;
+                    ++(expected ? crossing : apart);
+                }
+            }
+    EXPECT_GT(crossing, 5000u);
+    EXPECT_GT(apart, 5000u);
 }
 
 // The candidates are sorted in parallel: the list must be the ascending (length, i, j) one for any

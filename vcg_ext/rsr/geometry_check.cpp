@@ -16,10 +16,12 @@ bool GeometryCheck::faces_same_way(std::uint32_t x, std::uint32_t v1, std::uint3
     return x != v1 && x != v2 && normals_[x].dot(m) > constants::kGeometryNormalDot;
 }
 
-bool GeometryCheck::crosses(std::uint32_t v1, std::uint32_t v2, std::uint32_t a,
-                            std::uint32_t b) const {
-    return segments_cross({positions_[v1], positions_[v2], normals_[v1], normals_[v2]},
-                          {positions_[a], positions_[b], normals_[a], normals_[b]});
+SegmentCrossings GeometryCheck::segment(std::uint32_t v1, std::uint32_t v2) const {
+    return SegmentCrossings({positions_[v1], positions_[v2], normals_[v1], normals_[v2]});
+}
+
+bool GeometryCheck::crosses(const SegmentCrossings& v1v2, std::uint32_t a, std::uint32_t b) const {
+    return v1v2.crossed_by({positions_[a], positions_[b], normals_[a], normals_[b]});
 }
 
 bool GeometryCheck::passes(std::uint32_t v1, std::uint32_t v2, GeometryQuery& q) const {
@@ -30,6 +32,7 @@ bool GeometryCheck::passes(std::uint32_t v1, std::uint32_t v2, GeometryQuery& q)
     for (std::uint32_t a : q.ball)
         if (faces_same_way(a, v1, v2)) q.near.push_back(a);
     std::sort(q.near.begin(), q.near.end());
+    const SegmentCrossings v1v2 = segment(v1, v2);
     for (std::uint32_t a : q.near)
         for (const Dart& d : rotation_.darts(a)) {
             const std::uint32_t b = d.to;
@@ -37,14 +40,15 @@ bool GeometryCheck::passes(std::uint32_t v1, std::uint32_t v2, GeometryQuery& q)
             if (!faces_same_way(b, v1, v2) ||
                 (b < a && std::binary_search(q.near.begin(), q.near.end(), b)))
                 continue;
-            if (crosses(v1, v2, a, b)) return false;
+            if (crosses(v1v2, a, b)) return false;
         }
     return true;
 }
 
 bool GeometryCheck::crossed_at(std::uint32_t v1, std::uint32_t v2, std::uint32_t a) const {
+    const SegmentCrossings v1v2 = segment(v1, v2);
     for (const Dart& d : rotation_.darts(a))
-        if (faces_same_way(d.to, v1, v2) && crosses(v1, v2, a, d.to)) return true;
+        if (faces_same_way(d.to, v1, v2) && crosses(v1v2, a, d.to)) return true;
     return false;
 }
 

@@ -2,6 +2,7 @@
 // cross, in the tangent plane, any current edge of a nearby point facing the same way.
 #pragma once
 
+#include "geometry.h"
 #include "knn.h"
 #include "rsr/rotation_system.h"
 
@@ -34,7 +35,8 @@ public:
 
 private:
     bool faces_same_way(std::uint32_t x, std::uint32_t v1, std::uint32_t v2) const;
-    bool crosses(std::uint32_t v1, std::uint32_t v2, std::uint32_t a, std::uint32_t b) const;
+    SegmentCrossings segment(std::uint32_t v1, std::uint32_t v2) const;
+    bool crosses(const SegmentCrossings& v1v2, std::uint32_t a, std::uint32_t b) const;
 
     const KnnIndex& index_;
     const std::vector<Vec3>& positions_;
