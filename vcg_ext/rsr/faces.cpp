@@ -57,27 +57,37 @@ void Faces::label_all() {
             }
 }
 
+// The darts of both sides are kept as they are walked: the side that closes first is the
+// smaller, and its darts, all walked by then, take the new label without a second walk.
 void Faces::split(DartRef vw, DartRef wv) {
     // The darts after the new ones are old darts of the face being split.
-    const std::uint32_t old_label = rs_.dart(step(vw)).face;
-    const std::size_t bound = 2 * rs_.edge_count();
     DartRef a = step(vw), b = step(wv);
+    const std::uint32_t old_label = rs_.dart(a).face;
+    const std::size_t bound = 2 * rs_.edge_count();
+    side_a_.assign(1, vw);
+    side_b_.assign(1, wv);
     for (std::size_t n = 0;; ++n) {
         if (same(a, vw)) { // the side of v→w closed first: it is the smaller one
-            relabel(vw, next_label_++);
+            label(side_a_, next_label_++);
             rs_.dart(wv).face = old_label;
             break;
         }
         if (same(b, wv)) {
-            relabel(wv, next_label_++);
+            label(side_b_, next_label_++);
             rs_.dart(vw).face = old_label;
             break;
         }
         if (n > bound) throw std::logic_error("rotation system: a face does not close");
+        side_a_.push_back(a);
+        side_b_.push_back(b);
         a = step(a);
         b = step(b);
     }
     ++count_;
+}
+
+void Faces::label(const std::vector<DartRef>& face, std::uint32_t label) {
+    for (DartRef d : face) rs_.dart(d).face = label;
 }
 
 void Faces::mark_recorded_triangle(std::uint32_t u, std::uint32_t v) {

@@ -4,6 +4,8 @@
 
 #include "rsr/rotation_system.h"
 
+#include <vector>
+
 namespace hrsr::rsr {
 
 class Faces {
@@ -40,11 +42,13 @@ public:
 private:
     DartRef step(DartRef d) const;
     void relabel(DartRef start, std::uint32_t label);
+    void label(const std::vector<DartRef>& face, std::uint32_t label);
 
     RotationSystem& rs_;
     std::uint32_t next_label_ = 0;
     std::size_t count_ = 0;
-    std::vector<bool> recorded_; ///< per label
+    std::vector<bool> recorded_;           ///< per label
+    std::vector<DartRef> side_a_, side_b_; ///< split()'s walks (scratch)
 };
 
 } // namespace hrsr::rsr
