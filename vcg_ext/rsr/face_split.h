@@ -20,9 +20,10 @@ struct FaceSplitStats {
 /// Candidates whose fate threads work out ahead, in parallel, from the rotation before them.
 inline constexpr std::size_t kFaceSplitLookAhead = 4096;
 
-/// Runs the phase on `candidates` (ascending length); records the triangles it closes. The result
-/// is that of taking the candidates one by one, for any thread count and look-ahead (1 = none):
-/// threads only work out answers that the edges inserted meanwhile cannot change.
+/// Runs the phase on `candidates` (ascending length, each pair once, as face_split_candidates
+/// gives them); records the triangles it closes. The result is that of taking the candidates one
+/// by one, for any thread count and look-ahead (1 = none): threads only work out answers that the
+/// edges inserted meanwhile cannot change.
 FaceSplitStats split_faces(Embedding& embedding, const std::vector<CandidateEdge>& candidates,
                            const Execution& exec, std::size_t look_ahead = kFaceSplitLookAhead);
 
