@@ -7,11 +7,15 @@ namespace hrsr {
 
 namespace {
 
-// Side of point p relative to the directed line a→b, in the plane with basis (t1, t2).
-double side(const TangentFrame& f, const Vec3& a, const Vec3& b, const Vec3& p) {
-    const double bx = (b - a).dot(f.t1), by = (b - a).dot(f.t2);
+// Side of point p relative to the line from a along (bx, by), in the plane with basis (t1, t2).
+double side_along(const TangentFrame& f, const Vec3& a, double bx, double by, const Vec3& p) {
     const double px = (p - a).dot(f.t1), py = (p - a).dot(f.t2);
     return bx * py - by * px;
+}
+
+// Side of point p relative to the directed line a→b, in the plane with basis (t1, t2).
+double side(const TangentFrame& f, const Vec3& a, const Vec3& b, const Vec3& p) {
+    return side_along(f, a, (b - a).dot(f.t1), (b - a).dot(f.t2), p);
 }
 
 TangentFrame plane_frame(const Vec3& plane_normal) {
@@ -38,11 +42,7 @@ SegmentCrossings::SegmentCrossings(const SurfaceSegment& ab)
 
 // The same arithmetic as segments_cross, in the same order: the same answers to the bit.
 bool SegmentCrossings::crossed_by(const SurfaceSegment& cd) const {
-    const auto side_of_ab = [&](const Vec3& p) {
-        const double px = (p - a_).dot(frame_.t1), py = (p - a_).dot(frame_.t2);
-        return bx_ * py - by_ * px;
-    };
-    if (side_of_ab(cd.a) * side_of_ab(cd.b) <= 0 &&
+    if (side_along(frame_, a_, bx_, by_, cd.a) * side_along(frame_, a_, bx_, by_, cd.b) <= 0 &&
         side(frame_, cd.a, cd.b, a_) * side(frame_, cd.a, cd.b, b_) <= 0)
         return true;
     return cross_in_plane((cd.na + cd.nb) * 0.5, a_, b_, cd.a, cd.b);

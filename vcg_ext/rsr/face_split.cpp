@@ -96,7 +96,7 @@ struct Foresight {
 // candidates are the pairs i < j of a graph's rows).
 class VertexSummary {
 public:
-    explicit VertexSummary(const RotationSystem& rs, const Execution& exec)
+    VertexSummary(const RotationSystem& rs, const Execution& exec)
         : surrounded_(rs.vertex_count(), 0), first_(rs.vertex_count() + 1, 0) {
         const std::size_t n = rs.vertex_count();
         for (std::uint32_t v = 0; v < n; ++v) first_[v + 1] = first_[v] + rs.degree(v);

@@ -48,7 +48,7 @@ private:
     std::uint32_t next_label_ = 0;
     std::size_t count_ = 0;
     std::vector<bool> recorded_;           ///< per label
-    std::vector<DartRef> side_a_, side_b_; ///< split()'s walks (scratch)
+    std::vector<DartRef> side_a_, side_b_; ///< split()'s walks (scratch, at most half a face)
 };
 
 } // namespace hrsr::rsr
