@@ -28,22 +28,26 @@ bool locate(const SplitMesh& m, const Edge& e, SFace*& face, int& z) {
     return m.find_undirected_edge(e.first, e.second, face, z);
 }
 
-double cosine(const Vec3& apex, const Vec3& p, const Vec3& q) {
-    const Vec3 u = p - apex, v = q - apex;
-    const double nu = u.Norm(), nv = v.Norm();
+// The cosine of the angle between sides u and v of lengths nu and nv.
+double cosine(const Vec3& u, double nu, const Vec3& v, double nv) {
     return (nu > 0 && nv > 0) ? u.dot(v) / (nu * nv) : 1.0;
 }
 
-// Angles at the edge's endpoints in both triangles, in the cosine domain (no acos).
+// Angles at the edge's endpoints in both triangles, in the cosine domain (no acos). The five
+// sides are measured once (a − b is −(b − a) exactly, and of the same length); any angle over
+// 90° decides, whichever is found first.
 bool worth_flipping(const SplitMesh& m, SFace* f, int z, double small_cos) {
     SFace* g = f->FFp(z);
     const int w = f->FFi(z);
     const Vec3 a = m.position(m.vertex_of(f, z)), b = m.position(m.vertex_of(f, (z + 1) % 3));
     const Vec3 c = m.position(m.vertex_of(f, (z + 2) % 3)),
                d = m.position(m.vertex_of(g, (w + 2) % 3));
-    const double cosines[4] = {cosine(a, b, c), cosine(b, c, a), cosine(a, d, b), cosine(b, a, d)};
+    const Vec3 ab = b - a, ba = a - b, ac = c - a, bc = c - b, ad = d - a, bd = d - b;
+    const double n_ab = ab.Norm(), n_ac = ac.Norm(), n_bc = bc.Norm(), n_ad = ad.Norm(),
+                 n_bd = bd.Norm();
     bool small = false;
-    for (double k : cosines) {
+    for (const double k : {cosine(ab, n_ab, ac, n_ac), cosine(bc, n_bc, ba, n_ab),
+                           cosine(ad, n_ad, ab, n_ab), cosine(ba, n_ab, bd, n_bd)}) {
         if (k < 0) return false; // an angle over 90°
         small = small || k > small_cos;
     }

@@ -85,21 +85,21 @@ struct Fan {
 };
 
 // The two new triangles (c', c, q_j) and (c, c', q_i) depend on one spoke each: their normals
-// and min-angle terms are computed once per spoke, not once per pair.
+// and min-angle terms are computed once per spoke, not once per pair. At one spoke the two are
+// the same corners in the other turn: the same sides, and at each corner the same two side
+// vectors (their dot product and lengths commute exactly), so one min-angle term serves both.
 struct NewTriangles {
     std::vector<Vec3> out_normal, in_normal;
-    std::vector<double> out_angle, in_angle;
+    std::vector<double> angle;
     void assign(const Vec3& p_old, const Vec3& p_new, const std::vector<Vec3>& q) {
         out_normal.clear();
         in_normal.clear();
-        out_angle.clear();
-        in_angle.clear();
+        angle.clear();
         for (const Vec3& spoke : q) {
             const Tri t_out{{p_new, p_old, spoke}}, t_in{{p_old, p_new, spoke}};
             out_normal.push_back(t_out.normal());
             in_normal.push_back(t_in.normal());
-            out_angle.push_back(angle_term(t_out));
-            in_angle.push_back(angle_term(t_in));
+            angle.push_back(angle_term(t_out));
         }
     }
 };
@@ -118,15 +118,16 @@ struct FanRanges {
         worst.assign(d * d, 0);
         for (std::size_t from = 0; from < d; ++from) {
             double e = 0, m = 0;
-            for (std::size_t length = 1; length < d; ++length) {
-                const std::size_t w = (from + length - 1) % d;
+            // w runs from `from` round the fan; no division (the profile's top lines).
+            for (std::size_t length = 1, w = from; length < d; ++length) {
                 if (wedges[w]) e += fan.angle[w];
                 if (length > 1) { // the joint with the wedge before, inside the range
                     e += fan.joint[w].energy;
                     m = std::max(m, fan.joint[w].dihedral);
                 }
-                energy[from * d + (w + 1) % d] = e;
-                worst[from * d + (w + 1) % d] = m;
+                w = w + 1 == d ? 0 : w + 1;
+                energy[from * d + w] = e;
+                worst[from * d + w] = m;
             }
         }
     }
@@ -188,8 +189,8 @@ struct SplitTerms {
             s.energy += joint.energy;
             s.worst_dihedral = std::max(s.worst_dihedral, joint.dihedral);
         };
-        if (with_out) s.energy += spokes.out_angle[j];
-        if (with_in) s.energy += spokes.in_angle[i];
+        if (with_out) s.energy += spokes.angle[j];
+        if (with_in) s.energy += spokes.angle[i];
         if (with_in && with_out) // D-18: the true shared edge
             add(Joint(spokes.in_normal[i], spokes.out_normal[j], new_edge));
         s.energy += new_ranges.energy[j * d + i] + old_ranges.energy[i * d + j];
