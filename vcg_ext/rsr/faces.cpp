@@ -1,5 +1,7 @@
 #include "rsr/faces.h"
 
+#include "errors.h"
+
 #include <stdexcept>
 
 namespace hrsr::rsr {
@@ -52,7 +54,7 @@ void Faces::label_all() {
     for (std::uint32_t v = 0; v < rs_.vertex_count(); ++v)
         for (std::uint32_t i = 0; i < rs_.degree(v); ++i)
             if (rs_.dart(v, i).face == kNoFace) {
-                relabel({v, i}, next_label_++);
+                relabel({v, i}, new_label());
                 ++count_;
             }
 }
@@ -68,12 +70,12 @@ void Faces::split(DartRef vw, DartRef wv) {
     side_b_.assign(1, wv);
     for (std::size_t n = 0;; ++n) {
         if (same(a, vw)) { // the side of v→w closed first: it is the smaller one
-            label(side_a_, next_label_++);
+            label(side_a_, new_label());
             rs_.dart(wv).face = old_label;
             break;
         }
         if (same(b, wv)) {
-            label(side_b_, next_label_++);
+            label(side_b_, new_label());
             rs_.dart(vw).face = old_label;
             break;
         }
@@ -84,6 +86,14 @@ void Faces::split(DartRef vw, DartRef wv) {
         b = step(b);
     }
     ++count_;
+}
+
+std::uint32_t Faces::new_label() {
+    if (next_label_ >= kNoFace) // a piece of some 350 million points
+        throw InvalidInput("a piece of the cloud has more faces than the rotation system can "
+                           "label (2^" +
+                           std::to_string(kFaceBits) + "); reconstruct the cloud in parts");
+    return next_label_++;
 }
 
 void Faces::label(const std::vector<DartRef>& face, std::uint32_t label) {

@@ -41,6 +41,8 @@ public:
 
 private:
     DartRef step(DartRef d) const;
+    /// The next unused label; InvalidInput once kFaceBits bits are spent.
+    std::uint32_t new_label();
     void relabel(DartRef start, std::uint32_t label);
     void label(const std::vector<DartRef>& face, std::uint32_t label);
 

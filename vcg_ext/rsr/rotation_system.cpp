@@ -59,9 +59,9 @@ DartRef RotationSystem::next_in_face(DartRef d) const {
 std::pair<DartRef, DartRef> RotationSystem::insert_edge(std::uint32_t v, std::uint32_t w) {
     const double av = angle(v, w), aw = angle(w, v);
     const std::uint32_t pv = insertion_position(v, av, w);
-    rotation_[v].insert(rotation_[v].begin() + pv, Dart{w, kNoFace, av, 0});
+    rotation_[v].insert(rotation_[v].begin() + pv, Dart{w, kNoFace, 0, av});
     const std::uint32_t pw = insertion_position(w, aw, v);
-    rotation_[w].insert(rotation_[w].begin() + pw, Dart{v, kNoFace, aw, 0});
+    rotation_[w].insert(rotation_[w].begin() + pw, Dart{v, kNoFace, 0, aw});
     ++edges_;
     return {{v, pv}, {w, pw}};
 }

@@ -13,15 +13,20 @@
 
 namespace hrsr::rsr {
 
-inline constexpr std::uint32_t kNoFace = std::numeric_limits<std::uint32_t>::max();
+/// Face labels have kFaceBits bits (Faces throws before it would run out of them).
+inline constexpr int kFaceBits = 30;
+inline constexpr std::uint32_t kNoFace = (std::uint32_t(1) << kFaceBits) - 1;
 inline constexpr std::uint32_t kNotFound = std::numeric_limits<std::uint32_t>::max();
 
+/// 16 bytes: the face split's geometry checks read the darts of every point near a candidate,
+/// and on large clouds those reads miss the cache (docs/BENCHMARKS.md, session 39).
 struct Dart {
     std::uint32_t to;
-    std::uint32_t face = kNoFace;
-    double angle;               ///< rotation angle of `to` around the dart's origin
-    std::uint8_t triangles = 0; ///< triangles recorded on this edge (0, 1 or 2)
+    std::uint32_t face : kFaceBits;
+    std::uint32_t triangles : 2; ///< triangles recorded on this edge (0, 1 or 2)
+    double angle;                ///< rotation angle of `to` around the dart's origin
 };
+static_assert(sizeof(Dart) == 16);
 
 /// A dart named by its origin and its current position in the origin's rotation (positions
 /// shift when edges are inserted at that vertex).
