@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <random>
 #include <vector>
@@ -189,6 +190,67 @@ TEST(FaceSplit, CandidatesAreInOneOrderForAnyThreadCount) {
                         many[c].j == one[c].j)
                 << threads << " threads, at " << c;
     }
+}
+
+// D-50: each of the eight steps (an equal part of the length order) holds the candidates it held,
+// tile by tile (16,384 consecutive points), then those across tiles, each group in length
+// order; the same for any thread count; a component of one tile keeps the length order.
+TEST(FaceSplit, InTileOrderTakesEachStepTileByTile) {
+    const PreprocessOptions pre;
+    const auto by_length = [&](const PointSet& s) {
+        const rsr::ComponentCloud cloud{s.positions, s.positions, s.normals, s.size(), {}, {}};
+        const KnnIndex index(cloud.smoothed);
+        const rsr::CandidateGraph graph = rsr::build_candidate_graph(cloud, index, pre, {});
+        return rsr::face_split_candidates(graph, cloud, pre.distance, {});
+    };
+    const auto before = [](const rsr::CandidateEdge& a, const rsr::CandidateEdge& b) {
+        return a.length < b.length ||
+               (a.length == b.length && (a.i < b.i || (a.i == b.i && a.j < b.j)));
+    };
+    const auto same = [](const rsr::CandidateEdge& a, const rsr::CandidateEdge& b) {
+        return a.length == b.length && a.i == b.i && a.j == b.j;
+    };
+    const auto tile = [](const rsr::CandidateEdge& e) {
+        const std::uint32_t t = e.i >> rsr::kFaceSplitTileBits;
+        return t == e.j >> rsr::kFaceSplitTileBits ? t : std::numeric_limits<std::uint32_t>::max();
+    };
+
+    const auto candidates = by_length(testing::sample_torus(40000)); // three tiles
+    const auto tiled = rsr::in_tile_order(candidates, {1, nullptr});
+    const std::size_t n = candidates.size();
+    ASSERT_EQ(tiled.size(), n);
+    std::size_t across = 0, moved = 0;
+    for (std::size_t step = 0; step < rsr::kFaceSplitSteps; ++step) {
+        const std::size_t first = n * step / rsr::kFaceSplitSteps;
+        const std::size_t last = n * (step + 1) / rsr::kFaceSplitSteps;
+        for (std::size_t c = first; c < last; ++c) {
+            across += tile(tiled[c]) == std::numeric_limits<std::uint32_t>::max();
+            moved += !same(tiled[c], candidates[c]);
+            if (c > first) {
+                ASSERT_TRUE(
+                    tile(tiled[c - 1]) < tile(tiled[c]) ||
+                    (tile(tiled[c - 1]) == tile(tiled[c]) && before(tiled[c - 1], tiled[c])))
+                    << "at " << c;
+            }
+        }
+        std::vector<rsr::CandidateEdge> step_back(tiled.begin() + std::ptrdiff_t(first),
+                                                  tiled.begin() + std::ptrdiff_t(last));
+        std::sort(step_back.begin(), step_back.end(), before);
+        for (std::size_t c = first; c < last; ++c)
+            ASSERT_TRUE(same(step_back[c - first], candidates[c])) << "step " << step << ", " << c;
+    }
+    EXPECT_GT(across, 0u);
+    EXPECT_GT(moved, n / 10);
+    for (int threads : {2, 8}) {
+        const auto again = rsr::in_tile_order(candidates, {threads, nullptr});
+        for (std::size_t c = 0; c < n; ++c)
+            ASSERT_TRUE(same(again[c], tiled[c])) << threads << " threads, at " << c;
+    }
+
+    const auto one_tile = by_length(testing::sample_torus(12000));
+    const auto kept = rsr::in_tile_order(one_tile, {2, nullptr});
+    ASSERT_EQ(kept.size(), one_tile.size());
+    for (std::size_t c = 0; c < kept.size(); ++c) ASSERT_TRUE(same(kept[c], one_tile[c])) << c;
 }
 
 // HRsR's hand-off passes its kNN rows of the whole coarse cloud; a component takes the rows that

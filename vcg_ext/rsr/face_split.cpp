@@ -5,6 +5,7 @@
 #include "parallel.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace hrsr::rsr {
 
@@ -161,6 +162,31 @@ bool geometry_still_passes(const Embedding& e, const Foresight& f, std::size_t k
 }
 
 } // namespace
+
+// D-50: in the length order the candidates come from all over the cloud, and each geometry check
+// and insertion reads rotations, positions and normals that miss the cache once the cloud
+// outgrows it (the phase grew × 5.4–6.2 from the 800k to the 3.2M dragon sample's coarse cloud);
+// tile by tile, a step's reads stay in a few tiles' data. 95 % of the 3.2M sample's insertions
+// have their ends, ball and face walks in one tile (docs/BENCHMARKS.md, session 39).
+std::vector<CandidateEdge> in_tile_order(std::vector<CandidateEdge> by_length,
+                                         const Execution& exec) {
+    const std::size_t n = by_length.size();
+    const auto tile = [](const CandidateEdge& e) {
+        const std::uint32_t t = e.i >> kFaceSplitTileBits;
+        return t == e.j >> kFaceSplitTileBits ? t : std::numeric_limits<std::uint32_t>::max();
+    };
+    parallel_for(
+        exec, kFaceSplitSteps,
+        [&](std::size_t step) {
+            const auto first = by_length.begin() + std::ptrdiff_t(n * step / kFaceSplitSteps);
+            const auto last = by_length.begin() + std::ptrdiff_t(n * (step + 1) / kFaceSplitSteps);
+            std::stable_sort(first, last, [&](const CandidateEdge& a, const CandidateEdge& b) {
+                return tile(a) < tile(b);
+            });
+        },
+        1);
+    return by_length;
+}
 
 // kFaceSplitLookAhead: enough for every thread to have work, few enough that the nearby points
 // of a geometry check rarely gained an edge before the candidate's turn.

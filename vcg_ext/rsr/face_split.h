@@ -20,10 +20,21 @@ struct FaceSplitStats {
 /// Candidates whose fate threads work out ahead, in parallel, from the rotation before them.
 inline constexpr std::size_t kFaceSplitLookAhead = 4096;
 
-/// Runs the phase on `candidates` (ascending length, each pair once, as face_split_candidates
-/// gives them); records the triangles it closes. The result is that of taking the candidates one
-/// by one, for any thread count and look-ahead (1 = none): threads only work out answers that the
-/// edges inserted meanwhile cannot change.
+/// D-50: the face split takes its candidates in kFaceSplitSteps steps of equal count along the
+/// length order; inside a step, tile by tile (2^kFaceSplitTileBits consecutive points of the
+/// spatial order, D-40), then the candidates joining two tiles, each group in length order.
+inline constexpr std::size_t kFaceSplitSteps = 8;
+inline constexpr int kFaceSplitTileBits = 14;
+
+/// `by_length` (face_split_candidates' order) in D-50's order; the same for any thread count.
+/// A cloud of at most 2^kFaceSplitTileBits points keeps the length order.
+std::vector<CandidateEdge> in_tile_order(std::vector<CandidateEdge> by_length,
+                                         const Execution& exec);
+
+/// Runs the phase on `candidates` (each pair once, as face_split_candidates gives them, in
+/// in_tile_order()'s order or in length order); records the triangles it closes. The result is that
+/// of taking the candidates one by one, for any thread count and look-ahead (1 = none): threads
+/// only work out answers that the edges inserted meanwhile cannot change.
 FaceSplitStats split_faces(Embedding& embedding, const std::vector<CandidateEdge>& candidates,
                            const Execution& exec, std::size_t look_ahead = kFaceSplitLookAhead);
 

@@ -41,7 +41,7 @@ std::vector<LocalTriangle> reconstruct_component(const ComponentCloud& cloud,
     const KnnIndex index(cloud.smoothed, exec);
     const CandidateGraph graph = build_candidate_graph(cloud, index, pre, exec);
     const std::vector<CandidateEdge> candidates =
-        face_split_candidates(graph, cloud, pre.distance, exec);
+        in_tile_order(face_split_candidates(graph, cloud, pre.distance, exec), exec); // D-50
     stats.candidates = candidates.size();
     clock.lap("candidate graph");
 
