@@ -30,7 +30,8 @@ void RsrState::run(RsrPhase phase) {
     switch (phase) {
     case RsrPhase::CandidateGraph:
         graph = rsr::build_candidate_graph(cloud, index, options.preprocess, {});
-        candidates = rsr::face_split_candidates(graph, cloud, options.preprocess.distance, {});
+        candidates = rsr::in_tile_order(
+            rsr::face_split_candidates(graph, cloud, options.preprocess.distance, {}), {});
         break;
     case RsrPhase::SpanningTree:
         tree = rsr::candidate_spanning_tree(graph, cloud);

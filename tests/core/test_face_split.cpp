@@ -1,13 +1,15 @@
 // The face split's parallel look-ahead (rsr/face_split.cpp) must give what taking the candidates
-// one by one gives (look-ahead 1): the same triangles, the same rotation and the same counts, for
-// any thread count.
+// one by one gives (look-ahead 1), and its tiles in parallel (D-51) what they give one after
+// another: the same triangles, the same rotation and the same counts, for any thread count.
 #include "geometry.h"
 #include "knn.h"
 #include "options.h"
 #include "rsr/candidate_graph.h"
 #include "rsr/face_split.h"
 #include "rsr/spanning_tree.h"
+#include "rsr_invariants.h"
 #include "samplers.h"
+#include "spatial_order.h"
 
 #include <gtest/gtest.h>
 
@@ -40,13 +42,15 @@ std::vector<std::vector<std::uint32_t>> neighbours(const rsr::RotationSystem& ro
 }
 
 // RsR's stages up to the face split (as reconstruct_component runs them), then the face split.
+// `tiles`: in in_tile_order()'s order (as RsR takes them), else in length order.
 Split split(const rsr::ComponentCloud& cloud, const KnnIndex& index, int threads,
-            std::size_t look_ahead) {
+            std::size_t look_ahead, bool tiles = false, rsr::Observer* observer = nullptr) {
     const PreprocessOptions pre;
     Split s;
     s.graph = rsr::build_candidate_graph(cloud, index, pre, {});
     const rsr::CandidateGraph& graph = s.graph;
-    const auto candidates = rsr::face_split_candidates(graph, cloud, pre.distance, {});
+    auto candidates = rsr::face_split_candidates(graph, cloud, pre.distance, {});
+    if (tiles) candidates = rsr::in_tile_order(std::move(candidates), {});
     const SpanningForest tree = rsr::candidate_spanning_tree(graph, cloud);
     s.normals = std::make_unique<const std::vector<Vec3>>(rsr::fix_leaf_normals(tree, cloud));
     const std::vector<Vec3>& normals = *s.normals;
@@ -60,8 +64,9 @@ Split split(const rsr::ComponentCloud& cloud, const KnnIndex& index, int threads
     s.faces_of = std::make_unique<rsr::Faces>(rotation);
     rsr::Faces& faces = *s.faces_of;
     faces.label_all();
+    if (observer) observer->tree_built(rotation, faces);
     rsr::GeometryCheck geometry(index, cloud.smoothed, normals, rotation);
-    rsr::Embedding e{rotation, faces, geometry, s.triangles, nullptr};
+    rsr::Embedding e{rotation, faces, geometry, s.triangles, observer};
     s.stats = rsr::split_faces(e, candidates, {threads, nullptr}, look_ahead);
     return s;
 }
@@ -100,6 +105,40 @@ TEST(FaceSplit, LookingAheadInParallelTakesTheCandidatesAsOneByOne) {
                          << "look-ahead " << look_ahead << ", " << threads << " threads");
             expect_same(split(cloud, index, threads, look_ahead), one_by_one);
         }
+}
+
+// D-51: a cloud of several tiles takes each step's tiles at once and what they defer after them.
+// The result must not depend on the thread count, nor on an observer (which takes the tiles one
+// after another); the labels must be those of the faces traced from scratch, and the embedding
+// stays one of genus 0 (χ = 2). A graded noisy double torus of 33k points (three tiles), in
+// spatial order as RsR sees its clouds (D-40): its tiles defer some 3,000 candidates.
+TEST(FaceSplit, TilesOfAStepGiveOneSplitForAnyThreadCount) {
+    PointSet sampled = testing::sample_double_torus(60000, testing::Density::Graded);
+    testing::add_noise(sampled, 0.002 * testing::bounding_box_diagonal(sampled));
+    const PointSet s = reordered(sampled, spatial_order(sampled.positions, {}));
+    const rsr::ComponentCloud cloud{s.positions, s.positions, s.normals, s.size(), {}, {}};
+    const KnnIndex index(cloud.smoothed);
+    const Split one = split(cloud, index, 1, rsr::kFaceSplitLookAhead, true);
+    const rsr::FaceSplitStats& n = one.stats;
+    ASSERT_GT(n.inserted, 50000u);
+    EXPECT_GT(n.deferred, 100u);
+    EXPECT_LT(n.deferred, n.inserted / 5);
+    EXPECT_EQ(n.inserted + n.rejected_topology + n.rejected_geometry + n.rejected_triangles +
+                  one.tree_edge_candidates,
+              one.candidates);
+    testing::InvariantChecker::check_faces(*one.embedded, *one.faces_of);
+    EXPECT_EQ(long(one.embedded->vertex_count()) - long(one.embedded->edge_count()) +
+                  long(one.faces_of->count()),
+              2);
+    for (int threads : {2, 8}) {
+        SCOPED_TRACE(::testing::Message() << threads << " threads");
+        const Split many = split(cloud, index, threads, rsr::kFaceSplitLookAhead, true);
+        expect_same(many, one);
+        EXPECT_EQ(many.stats.deferred, n.deferred);
+    }
+    testing::InvariantChecker checker(5000);
+    SCOPED_TRACE("observed");
+    expect_same(split(cloud, index, 2, rsr::kFaceSplitLookAhead, true, &checker), one);
 }
 
 // The look-ahead rejects a candidate at a vertex surrounded by triangles without its angles: no

@@ -4,12 +4,12 @@
 
 namespace hrsr::rsr {
 
-void Embedding::record_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    count_triangle_edge(rotation, a, b);
-    count_triangle_edge(rotation, b, c);
-    count_triangle_edge(rotation, c, a);
-    faces.mark_recorded_triangle(a, b);
-    triangles.push_back({a, b, c});
+void Embedding::record_triangle(const LocalTriangle& t, std::vector<LocalTriangle>& list) {
+    count_triangle_edge(rotation, t[0], t[1]);
+    count_triangle_edge(rotation, t[1], t[2]);
+    count_triangle_edge(rotation, t[2], t[0]);
+    faces.mark_recorded_triangle(t[0], t[1]);
+    list.push_back(t);
 }
 
 } // namespace hrsr::rsr

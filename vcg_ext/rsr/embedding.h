@@ -23,7 +23,11 @@ struct Embedding {
     /// Records the face (a, b, c) of the rotation as an output triangle: each of its edges counts
     /// one more triangle, the face is marked (nothing enters it any more) and the triangle is
     /// appended.
-    void record_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+    void record_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        record_triangle({a, b, c}, triangles);
+    }
+    /// The same, appending the triangle to `list` (a thread's own, D-51).
+    void record_triangle(const LocalTriangle& t, std::vector<LocalTriangle>& list);
 
     /// Tells the observer (if any) that edge {u, v} was inserted in `phase` and recorded the last
     /// `new_triangles` triangles.

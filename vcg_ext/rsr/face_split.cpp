@@ -1,11 +1,13 @@
 #include "rsr/face_split.h"
 
+#include "rsr/face_split_parts.h"
+
 #include "geometry.h"
 #include "options.h"
 #include "parallel.h"
 
 #include <algorithm>
-#include <limits>
+#include <stdexcept>
 
 namespace hrsr::rsr {
 
@@ -31,51 +33,6 @@ bool surrounded_by_triangles(const RotationSystem& rs, std::uint32_t v) {
 
 namespace {
 
-bool has_common_neighbour(const RotationSystem& rs, std::uint32_t v1, std::uint32_t v2) {
-    for (const Dart& d : rs.darts(v1))
-        if (rs.adjacent(v2, d.to)) return true;
-    return false;
-}
-
-// The neighbour after `from` (counter-clockwise) in the rotation of v.
-std::uint32_t successor(const RotationSystem& rs, std::uint32_t v, std::uint32_t from) {
-    return rs.dart(v, rs.next(v, rs.find(v, from))).to;
-}
-
-// A triangle (v1, apex, v2) or (v1, v2, apex) closed by the new edge is valid when it is not a
-// sliver, its two old edges have room for another triangle, and it is a face of the rotation.
-bool triangle_is_valid(const RotationSystem& rs, std::uint32_t a, std::uint32_t b,
-                       std::uint32_t apex) {
-    const double max_angle = constants::kMaxTriangleAngleDegrees * M_PI / 180.0;
-    if (largest_angle(rs.position(a), rs.position(b), rs.position(apex)) > max_angle) return false;
-    if (triangles_on_edge(rs, a, apex) >= 2 || triangles_on_edge(rs, b, apex) >= 2) return false;
-    return true;
-}
-
-// §5.5.2 step 4, with the rotation as it is *before* inserting {v1, v2}. Returns false to reject.
-bool register_triangles(const RotationSystem& rs, std::uint32_t v1, std::uint32_t v2,
-                        std::vector<LocalTriangle>& found) {
-    found.clear();
-    if (!has_common_neighbour(rs, v1, v2)) return true;
-    // r1 is just clockwise of v2 at v1; r2 just clockwise of v1 at v2.
-    const std::uint32_t r1 = rs.dart(v1, rs.wedge(v1, v2)).to;
-    const std::uint32_t r2 = rs.dart(v2, rs.wedge(v2, v1)).to;
-    if (rs.adjacent(v2, r1) && ccw_angle(rs.angle(r1, v2), rs.angle(r1, v1)) < M_PI) {
-        // Triangle (v1, r1, v2): a face iff r1 follows v1 at v2 and v1 follows v2 at r1.
-        if (!triangle_is_valid(rs, v1, v2, r1) || rs.successor_as_if_inserted(v2, v1) != r1 ||
-            successor(rs, r1, v2) != v1)
-            return false;
-        found.push_back({v1, r1, v2});
-    }
-    if (rs.adjacent(v1, r2) && ccw_angle(rs.angle(r2, v1), rs.angle(r2, v2)) < M_PI) {
-        if (!triangle_is_valid(rs, v1, v2, r2) || rs.successor_as_if_inserted(v1, v2) != r2 ||
-            successor(rs, r2, v1) != v2)
-            return false;
-        found.push_back({v1, v2, r2});
-    }
-    return !found.empty(); // common neighbours but no triangle: the edge would cut across
-}
-
 // What a batch's parallel look-ahead learnt about a candidate from the rotation as it was before
 // the batch. The face split only inserts edges and splits faces, so two answers cannot change:
 // an edge once there stays, and wedges once in different faces stay in different faces (each
@@ -87,44 +44,6 @@ struct Foresight {
     std::vector<Outlook> outlook;
     std::vector<std::uint8_t> geometry_passed;
     std::vector<std::vector<std::uint32_t>> near; ///< the geometry check's nearby points
-};
-
-// What the look-ahead reads of a vertex before its rotation, in arrays small enough to stay in
-// the cache: the candidates come in length order from all over the cloud, and from about 400k
-// points (the 3.2M sample's coarse cloud) a rotation read is a miss to memory. Most candidates
-// end at a vertex surrounded by triangles (1.8M of 2.1M at 800k points); their answer needs only
-// whether the pair was an edge before the phase, since no candidate pair comes twice (the
-// candidates are the pairs i < j of a graph's rows).
-class VertexSummary {
-public:
-    VertexSummary(const RotationSystem& rs, const Execution& exec)
-        : surrounded_(rs.vertex_count(), 0), first_(rs.vertex_count() + 1, 0) {
-        const std::size_t n = rs.vertex_count();
-        for (std::uint32_t v = 0; v < n; ++v) first_[v + 1] = first_[v] + rs.degree(v);
-        initial_.resize(first_[n]);
-        parallel_for(exec, n, [&](std::size_t v) {
-            std::uint32_t at = first_[v];
-            for (const Dart& d : rs.darts(std::uint32_t(v))) initial_[at++] = d.to;
-            surrounded_[v] = surrounded_by_triangles(rs, std::uint32_t(v));
-        });
-    }
-
-    bool surrounded(std::uint32_t v) const { return surrounded_[v] != 0; }
-    /// Kept as the rotation changes (the look-ahead reads it between batches only). A vertex
-    /// once surrounded gains no edge (no face at it splits); the update on insertion says so.
-    void triangle_recorded(const RotationSystem& rs, const LocalTriangle& t) {
-        for (std::uint32_t v : t) surrounded_[v] = surrounded_by_triangles(rs, v);
-    }
-    void edge_inserted(std::uint32_t v, std::uint32_t w) { surrounded_[v] = surrounded_[w] = 0; }
-    bool adjacent_before_the_phase(std::uint32_t v, std::uint32_t w) const {
-        return std::find(initial_.begin() + first_[v], initial_.begin() + first_[v + 1], w) !=
-               initial_.begin() + first_[v + 1];
-    }
-
-private:
-    std::vector<std::uint8_t> surrounded_;
-    std::vector<std::uint32_t> first_;   ///< offsets into initial_
-    std::vector<std::uint32_t> initial_; ///< each vertex's neighbours before the phase
 };
 
 void work_out_ahead(const Embedding& e, const VertexSummary& summary,
@@ -171,43 +90,57 @@ bool geometry_still_passes(const Embedding& e, const Foresight& f, std::size_t k
 std::vector<CandidateEdge> in_tile_order(std::vector<CandidateEdge> by_length,
                                          const Execution& exec) {
     const std::size_t n = by_length.size();
-    const auto tile = [](const CandidateEdge& e) {
-        const std::uint32_t t = e.i >> kFaceSplitTileBits;
-        return t == e.j >> kFaceSplitTileBits ? t : std::numeric_limits<std::uint32_t>::max();
-    };
     parallel_for(
         exec, kFaceSplitSteps,
         [&](std::size_t step) {
             const auto first = by_length.begin() + std::ptrdiff_t(n * step / kFaceSplitSteps);
             const auto last = by_length.begin() + std::ptrdiff_t(n * (step + 1) / kFaceSplitSteps);
             std::stable_sort(first, last, [&](const CandidateEdge& a, const CandidateEdge& b) {
-                return tile(a) < tile(b);
+                return candidate_tile(a) < candidate_tile(b);
             });
         },
         1);
     return by_length;
 }
 
-// kFaceSplitLookAhead: enough for every thread to have work, few enough that the nearby points
-// of a geometry check rarely gained an edge before the candidate's turn.
-FaceSplitStats split_faces(Embedding& e, const std::vector<CandidateEdge>& candidates,
-                           const Execution& exec, std::size_t look_ahead) {
-    const std::size_t batch_size = std::max<std::size_t>(look_ahead, 1);
-    RotationSystem& rs = e.rotation;
-    FaceSplitStats stats;
-    std::vector<LocalTriangle> closed;
-    Foresight ahead{std::vector<Outlook>(batch_size), std::vector<std::uint8_t>(batch_size),
-                    std::vector<std::vector<std::uint32_t>>(batch_size)};
-    std::vector<std::uint32_t> changed_in(rs.vertex_count(), 0); ///< last batch (from 1) inserting
-    std::uint32_t batch = 0;
-    VertexSummary summary(rs, exec);
-    for (std::size_t first = 0; first < candidates.size(); first += batch_size) {
-        if (exec.progress) exec.progress->update(double(first) / double(candidates.size()));
-        const std::size_t count = std::min(batch_size, candidates.size() - first);
-        work_out_ahead(e, summary, candidates, first, count, exec, ahead);
-        ++batch;
+namespace {
+
+// The length order with the look-ahead: threads work out the next batch's answers from the
+// rotation before it, then one thread takes the batch's candidates in order.
+class LengthOrderSplit {
+public:
+    LengthOrderSplit(Embedding& e, VertexSummary& summary, std::size_t look_ahead)
+        : e_(e), summary_(summary), batch_size_(std::max<std::size_t>(look_ahead, 1)),
+          ahead_{std::vector<Outlook>(batch_size_), std::vector<std::uint8_t>(batch_size_),
+                 std::vector<std::vector<std::uint32_t>>(batch_size_)},
+          changed_in_(e.rotation.vertex_count(), 0) {}
+
+    /// Takes candidates[first, last); progress runs from `done` to `done + share` of the phase.
+    void run(const std::vector<CandidateEdge>& candidates, std::size_t first, std::size_t last,
+             const Execution& exec, FaceSplitStats& stats, double done, double share);
+
+private:
+    Embedding& e_;
+    VertexSummary& summary_;
+    std::size_t batch_size_;
+    Foresight ahead_;
+    std::vector<std::uint32_t> changed_in_; ///< last batch (from 1) inserting at each vertex
+    std::uint32_t batch_ = 0;
+    std::vector<LocalTriangle> closed_;
+};
+
+void LengthOrderSplit::run(const std::vector<CandidateEdge>& candidates, std::size_t begin,
+                           std::size_t end, const Execution& exec, FaceSplitStats& stats,
+                           double done, double share) {
+    RotationSystem& rs = e_.rotation;
+    for (std::size_t first = begin; first < end; first += batch_size_) {
+        if (exec.progress)
+            exec.progress->update(done + share * double(first - begin) / double(end - begin));
+        const std::size_t count = std::min(batch_size_, end - first);
+        work_out_ahead(e_, summary_, candidates, first, count, exec, ahead_);
+        ++batch_;
         for (std::size_t k = 0; k < count; ++k) {
-            const Outlook outlook = ahead.outlook[k];
+            const Outlook outlook = ahead_.outlook[k];
             if (outlook == Outlook::Adjacent) continue; // MST edges
             if (outlook == Outlook::DifferentFaces) {
                 ++stats.rejected_topology;
@@ -215,29 +148,113 @@ FaceSplitStats split_faces(Embedding& e, const std::vector<CandidateEdge>& candi
             }
             const std::uint32_t v1 = candidates[first + k].i, v2 = candidates[first + k].j;
             if (rs.adjacent(v1, v2)) continue;
-            if (e.faces.face_of_wedge(v1, v2) != e.faces.face_of_wedge(v2, v1)) {
+            if (e_.faces.face_of_wedge(v1, v2) != e_.faces.face_of_wedge(v2, v1)) {
                 ++stats.rejected_topology;
                 continue;
             }
-            if (!geometry_still_passes(e, ahead, k, v1, v2, changed_in, batch)) {
+            if (!geometry_still_passes(e_, ahead_, k, v1, v2, changed_in_, batch_)) {
                 ++stats.rejected_geometry;
                 continue;
             }
-            if (!register_triangles(rs, v1, v2, closed)) {
+            if (register_triangles(rs, v1, v2, closed_) != Closing::Valid) {
                 ++stats.rejected_triangles;
                 continue;
             }
             const auto [d1, d2] = rs.insert_edge(v1, v2);
-            e.faces.split(d1, d2);
-            changed_in[v1] = changed_in[v2] = batch;
-            summary.edge_inserted(v1, v2);
-            for (const LocalTriangle& t : closed) {
-                e.record_triangle(t[0], t[1], t[2]);
-                summary.triangle_recorded(rs, t);
+            e_.faces.split(d1, d2);
+            changed_in_[v1] = changed_in_[v2] = batch_;
+            summary_.edge_inserted(v1, v2);
+            for (const LocalTriangle& t : closed_) {
+                e_.record_triangle(t[0], t[1], t[2]);
+                summary_.triangle_recorded(rs, t);
             }
             ++stats.inserted;
-            e.edge_inserted(Phase::FaceSplit, v1, v2, closed.size());
+            e_.edge_inserted(Phase::FaceSplit, v1, v2, closed_.size());
         }
+    }
+}
+
+void add(FaceSplitStats& sum, const TileSplit& tile) {
+    const FaceSplitStats& part = tile.stats;
+    sum.inserted += part.inserted;
+    sum.rejected_topology += part.rejected_topology;
+    sum.rejected_geometry += part.rejected_geometry;
+    sum.rejected_triangles += part.rejected_triangles;
+    sum.deferred += tile.deferred.size();
+}
+
+// One step's tiles (in in_tile_order's order: runs of one tile, those across tiles last), with
+// the labels each may give: as many as it has candidates.
+std::vector<TileSplit> tiles_of_step(const std::vector<CandidateEdge>& candidates,
+                                     std::size_t first, std::size_t last, Faces& faces,
+                                     std::size_t& across_from) {
+    std::vector<TileSplit> tiles;
+    std::size_t k = first;
+    while (k < last && candidate_tile(candidates[k]) != Region::kEverywhere) {
+        TileSplit t;
+        t.tile = candidate_tile(candidates[k]);
+        t.first = k;
+        while (k < last && candidate_tile(candidates[k]) == t.tile) ++k;
+        t.last = k;
+        if (!tiles.empty() && tiles.back().tile >= t.tile)
+            throw std::logic_error("face split: candidates not in in_tile_order()'s order");
+        tiles.push_back(std::move(t));
+    }
+    across_from = k;
+    for (std::size_t c = k; c < last; ++c)
+        if (candidate_tile(candidates[c]) != Region::kEverywhere)
+            throw std::logic_error("face split: candidates not in in_tile_order()'s order");
+    std::uint32_t label = faces.reserve_labels(k - first);
+    for (TileSplit& t : tiles) {
+        t.next_label = label;
+        label += std::uint32_t(t.last - t.first);
+    }
+    return tiles;
+}
+
+} // namespace
+
+// D-51: a cloud of more than one tile takes each step's tiles at once, one thread a tile, then,
+// in the length order with the look-ahead, what the tiles deferred (tile by tile) and the
+// candidates across tiles. Whatever the thread count the tiles do what they would one after
+// another: none reads what another changes.
+FaceSplitStats split_faces(Embedding& e, const std::vector<CandidateEdge>& candidates,
+                           const Execution& exec, std::size_t look_ahead) {
+    FaceSplitStats stats;
+    VertexSummary summary(e.rotation, exec);
+    LengthOrderSplit in_length_order(e, summary, look_ahead);
+    const std::size_t n = candidates.size();
+    if (e.rotation.vertex_count() <= (std::size_t(1) << kFaceSplitTileBits)) {
+        in_length_order.run(candidates, 0, n, exec, stats, 0.0, 1.0);
+        return stats;
+    }
+    for (std::size_t step = 0; step < kFaceSplitSteps; ++step) {
+        const std::size_t first = n * step / kFaceSplitSteps;
+        const std::size_t last = n * (step + 1) / kFaceSplitSteps;
+        const double done = double(step) / double(kFaceSplitSteps);
+        if (exec.progress) exec.progress->update(done);
+        std::size_t across_from = last;
+        std::vector<TileSplit> tiles = tiles_of_step(candidates, first, last, e.faces, across_from);
+        if (e.observer) {
+            for (TileSplit& t : tiles) split_in_tile(e, summary, candidates, t, true);
+        } else {
+            parallel_for(
+                without_progress(exec), tiles.size(),
+                [&](std::size_t t) { split_in_tile(e, summary, candidates, tiles[t], false); }, 1);
+        }
+        std::vector<CandidateEdge> rest;
+        for (TileSplit& t : tiles) {
+            add(stats, t);
+            if (!e.observer) {
+                e.rotation.count_edges(t.stats.inserted);
+                e.faces.count_splits(t.stats.inserted);
+                e.triangles.insert(e.triangles.end(), t.triangles.begin(), t.triangles.end());
+            }
+            rest.insert(rest.end(), t.deferred.begin(), t.deferred.end());
+        }
+        rest.insert(rest.end(), candidates.begin() + std::ptrdiff_t(across_from),
+                    candidates.begin() + std::ptrdiff_t(last));
+        in_length_order.run(rest, 0, rest.size(), exec, stats, done, 0.5 / double(kFaceSplitSteps));
     }
     return stats;
 }

@@ -15,6 +15,7 @@ struct FaceSplitStats {
     std::size_t rejected_topology = 0;  ///< endpoints' wedges in different faces
     std::size_t rejected_geometry = 0;  ///< crossing a nearby edge
     std::size_t rejected_triangles = 0; ///< would close an invalid triangle
+    std::size_t deferred = 0; ///< D-51: left by their tile's pass until after the step's tiles
 };
 
 /// Candidates whose fate threads work out ahead, in parallel, from the rotation before them.
@@ -32,9 +33,12 @@ std::vector<CandidateEdge> in_tile_order(std::vector<CandidateEdge> by_length,
                                          const Execution& exec);
 
 /// Runs the phase on `candidates` (each pair once, as face_split_candidates gives them, in
-/// in_tile_order()'s order or in length order); records the triangles it closes. The result is that
-/// of taking the candidates one by one, for any thread count and look-ahead (1 = none): threads
-/// only work out answers that the edges inserted meanwhile cannot change.
+/// in_tile_order()'s order; a component of one tile may take them in length order); records the
+/// triangles it closes. One tile's candidates are taken as one by one, for any thread count and
+/// look-ahead (1 = none): threads only work out answers that the edges inserted meanwhile cannot
+/// change. With more tiles, each step's tiles run at once, each deferring what reaches outside
+/// it, then the deferred and those across tiles in that order (D-51): the same for any thread
+/// count.
 FaceSplitStats split_faces(Embedding& embedding, const std::vector<CandidateEdge>& candidates,
                            const Execution& exec, std::size_t look_ahead = kFaceSplitLookAhead);
 

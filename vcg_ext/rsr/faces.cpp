@@ -12,10 +12,6 @@ bool same(DartRef a, DartRef b) {
 }
 } // namespace
 
-DartRef Faces::step(DartRef d) const {
-    return rs_.next_in_face(d);
-}
-
 // Walks are bounded by the number of darts: a rotation system that does not close its faces is
 // a bug, reported instead of looping forever.
 std::size_t Faces::length(DartRef d) const {
@@ -54,7 +50,7 @@ void Faces::label_all() {
     for (std::uint32_t v = 0; v < rs_.vertex_count(); ++v)
         for (std::uint32_t i = 0; i < rs_.degree(v); ++i)
             if (rs_.dart(v, i).face == kNoFace) {
-                relabel({v, i}, new_label());
+                relabel({v, i}, take_labels(1));
                 ++count_;
             }
 }
@@ -62,38 +58,39 @@ void Faces::label_all() {
 // The darts of both sides are kept as they are walked: the side that closes first is the
 // smaller, and its darts, all walked by then, take the new label without a second walk.
 void Faces::split(DartRef vw, DartRef wv) {
-    // The darts after the new ones are old darts of the face being split.
-    DartRef a = step(vw), b = step(wv);
-    const std::uint32_t old_label = rs_.dart(a).face;
-    const std::size_t bound = 2 * rs_.edge_count();
-    side_a_.assign(1, vw);
-    side_b_.assign(1, wv);
-    for (std::size_t n = 0;; ++n) {
-        if (same(a, vw)) { // the side of v→w closed first: it is the smaller one
-            label(side_a_, new_label());
-            rs_.dart(wv).face = old_label;
-            break;
-        }
-        if (same(b, wv)) {
-            label(side_b_, new_label());
-            rs_.dart(vw).face = old_label;
-            break;
-        }
-        if (n > bound) throw std::logic_error("rotation system: a face does not close");
-        side_a_.push_back(a);
-        side_b_.push_back(b);
-        a = step(a);
-        b = step(b);
-    }
+    const int smaller =
+        walk_sides(vw, wv, walks_, 2 * rs_.edge_count(), [](std::uint32_t) { return true; });
+    label_sides(vw, wv, smaller, walks_, take_labels(1));
     ++count_;
 }
 
-std::uint32_t Faces::new_label() {
-    if (next_label_ >= kNoFace) // a piece of some 350 million points
+void Faces::label_sides(DartRef vw, DartRef wv, int smaller, const SplitWalks& walks,
+                        std::uint32_t new_label) {
+    // The dart after v→w is old (no face of a simple graph is one dart long: walks.a[1] exists).
+    const std::uint32_t old_label = rs_.dart(walks.a[1]).face;
+    if (smaller == 0) {
+        label(walks.a, new_label);
+        rs_.dart(wv).face = old_label;
+    } else {
+        label(walks.b, new_label);
+        rs_.dart(vw).face = old_label;
+    }
+}
+
+std::uint32_t Faces::reserve_labels(std::size_t n) {
+    const std::uint32_t first = take_labels(n);
+    if (recorded_.size() < next_label_) recorded_.resize(next_label_, 0);
+    return first;
+}
+
+std::uint32_t Faces::take_labels(std::size_t n) {
+    if (n > std::size_t(kNoFace - next_label_)) // a piece of some 350 million points
         throw InvalidInput("a piece of the cloud has more faces than the rotation system can "
                            "label (2^" +
                            std::to_string(kFaceBits) + "); reconstruct the cloud in parts");
-    return next_label_++;
+    const std::uint32_t first = next_label_;
+    next_label_ += std::uint32_t(n);
+    return first;
 }
 
 void Faces::label(const std::vector<DartRef>& face, std::uint32_t label) {
@@ -102,8 +99,8 @@ void Faces::label(const std::vector<DartRef>& face, std::uint32_t label) {
 
 void Faces::mark_recorded_triangle(std::uint32_t u, std::uint32_t v) {
     const std::uint32_t label = rs_.dart(u, rs_.find(u, v)).face;
-    if (label >= recorded_.size()) recorded_.resize(std::size_t(label) + 1, false);
-    recorded_[label] = true;
+    if (label >= recorded_.size()) recorded_.resize(std::size_t(label) + 1, 0);
+    recorded_[label] = 1;
 }
 
 void Faces::merge(DartRef vw, DartRef wv) {

@@ -24,7 +24,7 @@ bool GeometryCheck::crosses(const SegmentCrossings& v1v2, std::uint32_t a, std::
     return v1v2.crossed_by({positions_[a], positions_[b], normals_[a], normals_[b]});
 }
 
-bool GeometryCheck::passes(std::uint32_t v1, std::uint32_t v2, GeometryQuery& q) const {
+void GeometryCheck::gather(std::uint32_t v1, std::uint32_t v2, GeometryQuery& q) const {
     const Vec3& p1 = positions_[v1];
     const Vec3& p2 = positions_[v2];
     index_.within((p1 + p2) * 0.5, constants::kGeometryBallFactor * (p2 - p1).Norm(), q.ball);
@@ -32,6 +32,10 @@ bool GeometryCheck::passes(std::uint32_t v1, std::uint32_t v2, GeometryQuery& q)
     for (std::uint32_t a : q.ball)
         if (faces_same_way(a, v1, v2)) q.near.push_back(a);
     std::sort(q.near.begin(), q.near.end());
+}
+
+bool GeometryCheck::passes_gathered(std::uint32_t v1, std::uint32_t v2,
+                                    const GeometryQuery& q) const {
     const SegmentCrossings v1v2 = segment(v1, v2);
     for (std::uint32_t a : q.near)
         for (const Dart& d : rotation_.darts(a)) {

@@ -25,9 +25,18 @@ public:
 
     /// True when no current edge {a, b} near the segment v1–v2 crosses it. Reads the rotation
     /// only: threads may test at once while nobody inserts. `query` receives the nearby points.
-    bool passes(std::uint32_t v1, std::uint32_t v2, GeometryQuery& query) const;
+    bool passes(std::uint32_t v1, std::uint32_t v2, GeometryQuery& query) const {
+        gather(v1, v2, query);
+        return passes_gathered(v1, v2, query);
+    }
     /// The same with the check's own scratch (not thread-safe).
     bool passes(std::uint32_t v1, std::uint32_t v2) { return passes(v1, v2, own_); }
+
+    /// passes() in two halves, for callers that must know which rotations the test will read
+    /// before it reads them (D-51): gather() fills `query` and reads positions and normals only;
+    /// passes_gathered() then reads the rotations of query.near.
+    void gather(std::uint32_t v1, std::uint32_t v2, GeometryQuery& query) const;
+    bool passes_gathered(std::uint32_t v1, std::uint32_t v2, const GeometryQuery& query) const;
 
     /// True when some current edge of `a` (a point of a query's `near`) that the test of v1–v2
     /// considers crosses it: what an edge inserted at `a` after the test may have changed.

@@ -56,14 +56,18 @@ DartRef RotationSystem::next_in_face(DartRef d) const {
     return {v, prev(v, find(v, d.v))};
 }
 
-std::pair<DartRef, DartRef> RotationSystem::insert_edge(std::uint32_t v, std::uint32_t w) {
+std::pair<DartRef, DartRef> RotationSystem::insert_darts(std::uint32_t v, std::uint32_t w) {
     const double av = angle(v, w), aw = angle(w, v);
     const std::uint32_t pv = insertion_position(v, av, w);
     rotation_[v].insert(rotation_[v].begin() + pv, Dart{w, kNoFace, 0, av});
     const std::uint32_t pw = insertion_position(w, aw, v);
     rotation_[w].insert(rotation_[w].begin() + pw, Dart{v, kNoFace, 0, aw});
-    ++edges_;
     return {{v, pv}, {w, pw}};
+}
+
+void RotationSystem::erase_darts(std::pair<DartRef, DartRef> darts) {
+    rotation_[darts.first.v].erase(rotation_[darts.first.v].begin() + darts.first.i);
+    rotation_[darts.second.v].erase(rotation_[darts.second.v].begin() + darts.second.i);
 }
 
 } // namespace hrsr::rsr

@@ -74,7 +74,18 @@ public:
 
     /// Inserts the edge {v, w} (absent, v ≠ w) at the positions its angles decide. The new darts
     /// have no face label and no triangles. Returns them (v→w, w→v), valid until the next insert.
-    std::pair<DartRef, DartRef> insert_edge(std::uint32_t v, std::uint32_t w);
+    std::pair<DartRef, DartRef> insert_edge(std::uint32_t v, std::uint32_t w) {
+        const auto darts = insert_darts(v, w);
+        ++edges_;
+        return darts;
+    }
+
+    /// insert_edge() for threads inserting at disjoint sets of vertices (D-51): the edge count is
+    /// left to count_edges(), called once they are done.
+    std::pair<DartRef, DartRef> insert_darts(std::uint32_t v, std::uint32_t w);
+    /// Takes back the darts the last insert_darts() returned (nothing has moved them since).
+    void erase_darts(std::pair<DartRef, DartRef> darts);
+    void count_edges(std::size_t inserted) { edges_ += inserted; }
 
     /// Unit normal used for angles at v.
     const Vec3& normal(std::uint32_t v) const { return normals_[v]; }
