@@ -181,13 +181,15 @@ std::size_t append_points_in_no_triangle(const PreparedCloud& cloud,
 // The fold repair on the finished mesh, on the coordinates as written: one search for the
 // intersecting pairs, D-26's flips, then D-32 cuts out what they left, so that the written mesh
 // has no intersecting pair. rounds = 0 turns both off. D-45 closes the loops of at most
-// `pinhole_edges` of pieces closed but for them (kMaxFilledLoop: none).
-void repair_and_remove_folds(const PointSet& input, const PreparedCloud& cloud, int rounds,
+// `pinhole_edges` of pieces closed but for them (kMaxFilledLoop: none). The cloud is released
+// before the search: the fold removal is the run's peak of memory (issue 20 item 5).
+void repair_and_remove_folds(const PointSet& input, PreparedCloud cloud, int rounds,
                              std::size_t pinhole_edges, const Execution& exec, Reconstruction& mesh,
                              ReconstructionReport& report) {
     if (rounds <= 0 || mesh.triangles.size() < 2) return;
     if (exec.progress) exec.progress->begin("fold repair");
     const std::size_t given = append_points_in_no_triangle(cloud, report, mesh);
+    cloud = PreparedCloud();
     const std::vector<Vec3> written = written_positions(input, mesh, exec);
     std::optional<Timer> timer(std::in_place, report.timings, "fold search");
     FoldSearch search(written, mesh.triangles, exec);
@@ -437,7 +439,7 @@ Reconstruction finished(const PointSet& input, const InSpatialOrder& ordered, bo
 // RsR's mesh of `input` (in spatial order), before it is measured.
 Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const Execution& exec,
                        ReconstructionReport& report, rsr::Observer* observer) {
-    const PreparedCloud cloud =
+    PreparedCloud cloud =
         preprocess(input, options.preprocess, exec, report.preprocess, InputOrder::Spatial);
     report.points_used = cloud.size();
     report.timings = report.preprocess.timings;
@@ -456,11 +458,12 @@ Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const E
     report.vertex_copies = m.copies;
     Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
     assembly.reset();
-    repair_and_remove_folds(input, cloud, options.fold_repair_rounds, kMaxFilledLoop, exec, mesh,
-                            report);
+    const Normalisation normalisation = cloud.normalisation;
+    repair_and_remove_folds(input, std::move(cloud), options.fold_repair_rounds, kMaxFilledLoop,
+                            exec, mesh, report);
     clear_flat_output_faces(input, mesh, exec, report);
     restore_input_normals(input, report.preprocess, mesh);
-    return {std::move(mesh), cloud.normalisation};
+    return {std::move(mesh), normalisation};
 }
 
 // HRsR's mesh of `input` (in spatial order), before it is measured.
@@ -469,8 +472,8 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
                         const Execution& exec, ReconstructionReport& report,
                         rsr::Observer* observer, ReexpansionObserver* reexpansion_observer) {
     const PreprocessOptions& pre = options.rsr.preprocess;
-    const PreparedCloud cloud = prepare_points(input, pre, exec, report.preprocess, nullptr,
-                                               PrepareFor::Collapse, InputOrder::Spatial);
+    PreparedCloud cloud = prepare_points(input, pre, exec, report.preprocess, nullptr,
+                                         PrepareFor::Collapse, InputOrder::Spatial);
     std::vector<Vec3>().swap(input.normals);
     report.points_used = cloud.size();
     report.timings = report.preprocess.timings;
@@ -514,7 +517,7 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
                        : options.reexpand.l_min;
     // Fates of the points that are not their own vertex (§8.7) need the collapse trees; the
     // records themselves go to the re-expansion, which frees them as soon as they are spent.
-    const IndexVector<PointIndex, PointIndex> root = tree_roots(cloud.size(), collapsed.records);
+    IndexVector<PointIndex, PointIndex> root = tree_roots(cloud.size(), collapsed.records);
     ReexpandedMesh fine;
     {
         Timer timer(report.timings, "re-expansion");
@@ -529,15 +532,20 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
     collapsed = CollapsedCloud();
     record_fates(cloud, fine.alias, root, dropped_nodes, report);
     finish_border(fine, geometry, rsr::candidate_rank(pre.k, cloud.size()), exec, report);
-    // The re-expanded mesh is manifold by construction; the fan split is a safety net.
-    // Its vertices are compacted into the output's: both are VertexIndex, of two meshes.
-    CompactMesh<VertexIndex> out =
-        compact<VertexIndex>(fine.vertex_node.size(), std::move(fine.triangles), exec);
-    report.vertex_copies += out.copies;
-    IndexVector<VertexIndex, PointIndex> vertex_point;
-    vertex_point.reserve(out.vertex_point.size());
-    for (VertexIndex v : out.vertex_point) vertex_point.push_back(fine.vertex_node[v]);
-    Reconstruction mesh = make_output(cloud, vertex_point, std::move(out.triangles));
+    Reconstruction mesh = [&] {
+        // The re-expanded mesh is manifold by construction; the fan split is a safety net.
+        // Its vertices are compacted into the output's: both are VertexIndex, of two meshes.
+        CompactMesh<VertexIndex> out =
+            compact<VertexIndex>(fine.vertex_node.size(), std::move(fine.triangles), exec);
+        report.vertex_copies += out.copies;
+        IndexVector<VertexIndex, PointIndex> vertex_point;
+        vertex_point.reserve(out.vertex_point.size());
+        for (VertexIndex v : out.vertex_point) vertex_point.push_back(fine.vertex_node[v]);
+        return make_output(cloud, vertex_point, std::move(out.triangles));
+    }();
+    // Released before the fold repair, whose search and removal are the run's peak of memory.
+    fine = ReexpandedMesh();
+    root = IndexVector<PointIndex, PointIndex>();
     assembly.reset();
     // D-45: the loops of a piece closed but for loops no longer than a handle must be to stay
     // (D-27's hop limit on the input cloud) are pinholes of the coarse sampling that the
@@ -545,10 +553,11 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
     const std::size_t pinhole_edges =
         std::max(kMaxFilledLoop,
                  rsr::handle_hop_limit(options.rsr.min_handle_loop, cloud.size(), cloud.size()));
-    repair_and_remove_folds(input, cloud, options.rsr.fold_repair_rounds, pinhole_edges, exec, mesh,
-                            report);
+    const Normalisation normalisation = cloud.normalisation;
+    repair_and_remove_folds(input, std::move(cloud), options.rsr.fold_repair_rounds, pinhole_edges,
+                            exec, mesh, report);
     clear_flat_output_faces(input, mesh, exec, report);
-    return {std::move(mesh), cloud.normalisation};
+    return {std::move(mesh), normalisation};
 }
 
 } // namespace
