@@ -1,6 +1,7 @@
 // The face split's parallel look-ahead (rsr/face_split.cpp) must give what taking the candidates
 // one by one gives (look-ahead 1), and its tiles in parallel (D-51) what they give one after
 // another: the same triangles, the same rotation and the same counts, for any thread count.
+#include "errors.h"
 #include "geometry.h"
 #include "knn.h"
 #include "options.h"
@@ -139,6 +140,25 @@ TEST(FaceSplit, TilesOfAStepGiveOneSplitForAnyThreadCount) {
     testing::InvariantChecker checker(5000);
     SCOPED_TRACE("observed");
     expect_same(split(cloud, index, 2, rsr::kFaceSplitLookAhead, true, &checker), one);
+}
+
+// D-51's label blocks: consecutive, and a clear error (not a wrapped label) once the 2^30 labels
+// of a dart would run out.
+TEST(FaceSplit, LabelBlocksAreConsecutiveAndBoundedByTheDartsBits) {
+    const std::vector<Vec3> positions{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    const std::vector<Vec3> normals(3, Vec3(0, 0, 1));
+    rsr::RotationSystem rotation(positions, normals);
+    rotation.insert_edge(0, 1);
+    rotation.insert_edge(1, 2);
+    rsr::Faces faces(rotation);
+    faces.label_all(); // one face: label 0
+    EXPECT_EQ(faces.reserve_labels(5), 1u);
+    EXPECT_EQ(faces.reserve_labels(0), 6u);
+    EXPECT_FALSE(faces.is_recorded_triangle(5));
+    EXPECT_THROW(faces.reserve_labels(rsr::kNoFace), InvalidInput);
+    // One label more than 6 … kNoFace − 1 (taking them all would allocate a flag for each).
+    EXPECT_THROW(faces.reserve_labels(rsr::kNoFace - 6 + 1), InvalidInput);
+    EXPECT_EQ(faces.reserve_labels(1), 6u); // nothing was taken by the refusals
 }
 
 // The look-ahead rejects a candidate at a vertex surrounded by triangles without its angles: no

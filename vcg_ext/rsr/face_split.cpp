@@ -184,17 +184,22 @@ void add(FaceSplitStats& sum, const TileSplit& tile) {
 }
 
 // One step's tiles (in in_tile_order's order: runs of one tile, those across tiles last), with
-// the labels each may give: as many as it has candidates.
+// the labels each may give: one for each of its candidates that may still be inserted. A vertex
+// surrounded by triangles stays so and gains no edge, so a candidate at one never is.
 std::vector<TileSplit> tiles_of_step(const std::vector<CandidateEdge>& candidates,
-                                     std::size_t first, std::size_t last, Faces& faces,
+                                     std::size_t first, std::size_t last,
+                                     const VertexSummary& summary, Faces& faces,
                                      std::size_t& across_from) {
     std::vector<TileSplit> tiles;
-    std::size_t k = first;
+    std::size_t k = first, open = 0;
     while (k < last && candidate_tile(candidates[k]) != Region::kEverywhere) {
         TileSplit t;
         t.tile = candidate_tile(candidates[k]);
         t.first = k;
-        while (k < last && candidate_tile(candidates[k]) == t.tile) ++k;
+        for (; k < last && candidate_tile(candidates[k]) == t.tile; ++k)
+            t.labels +=
+                !summary.surrounded(candidates[k].i) && !summary.surrounded(candidates[k].j);
+        open += t.labels;
         t.last = k;
         if (!tiles.empty() && tiles.back().tile >= t.tile)
             throw std::logic_error("face split: candidates not in in_tile_order()'s order");
@@ -204,10 +209,10 @@ std::vector<TileSplit> tiles_of_step(const std::vector<CandidateEdge>& candidate
     for (std::size_t c = k; c < last; ++c)
         if (candidate_tile(candidates[c]) != Region::kEverywhere)
             throw std::logic_error("face split: candidates not in in_tile_order()'s order");
-    std::uint32_t label = faces.reserve_labels(k - first);
+    std::uint32_t label = faces.reserve_labels(open);
     for (TileSplit& t : tiles) {
         t.next_label = label;
-        label += std::uint32_t(t.last - t.first);
+        label += std::uint32_t(t.labels);
     }
     return tiles;
 }
@@ -234,7 +239,8 @@ FaceSplitStats split_faces(Embedding& e, const std::vector<CandidateEdge>& candi
         const double done = double(step) / double(kFaceSplitSteps);
         if (exec.progress) exec.progress->update(done);
         std::size_t across_from = last;
-        std::vector<TileSplit> tiles = tiles_of_step(candidates, first, last, e.faces, across_from);
+        std::vector<TileSplit> tiles =
+            tiles_of_step(candidates, first, last, summary, e.faces, across_from);
         if (e.observer) {
             for (TileSplit& t : tiles) split_in_tile(e, summary, candidates, t, true);
         } else {

@@ -68,7 +68,8 @@ private:
 struct TileSplit {
     std::uint32_t tile = 0;
     std::size_t first = 0, last = 0; ///< its candidates' positions in the list
-    std::uint32_t next_label = 0;    ///< the first of last − first labels reserved for it
+    std::uint32_t next_label = 0;    ///< the next of the labels reserved for it
+    std::size_t labels = 0;          ///< how many of them are left
     FaceSplitStats stats;
     std::vector<LocalTriangle> triangles; ///< in the order recorded
     std::vector<CandidateEdge> deferred;  ///< reading or changing outside the tile, in order

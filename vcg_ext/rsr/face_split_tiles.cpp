@@ -6,6 +6,8 @@
 // their answers to "same face?".
 #include "rsr/face_split_parts.h"
 
+#include <stdexcept>
+
 namespace hrsr::rsr {
 
 namespace {
@@ -59,6 +61,7 @@ void split_in_tile(Embedding& e, VertexSummary& summary,
             ++stats.rejected_triangles;
             continue;
         }
+        if (work.labels == 0) throw std::logic_error("face split: a tile ran out of labels");
         const auto darts = rs.insert_darts(v1, v2);
         if (!e.faces.split_inside(darts.first, darts.second, work.next_label, walks, inside)) {
             rs.erase_darts(darts);
@@ -66,6 +69,7 @@ void split_in_tile(Embedding& e, VertexSummary& summary,
             continue;
         }
         ++work.next_label;
+        --work.labels;
         summary.edge_inserted(v1, v2);
         for (const LocalTriangle& t : closed) {
             e.record_triangle(t, triangles);

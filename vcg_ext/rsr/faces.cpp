@@ -84,7 +84,8 @@ std::uint32_t Faces::reserve_labels(std::size_t n) {
 }
 
 std::uint32_t Faces::take_labels(std::size_t n) {
-    if (n > std::size_t(kNoFace - next_label_)) // a piece of some 350 million points
+    // D-51 reserves labels for candidates that are not inserted too (docs/ALGORITHM.md).
+    if (n > std::size_t(kNoFace - next_label_))
         throw InvalidInput("a piece of the cloud has more faces than the rotation system can "
                            "label (2^" +
                            std::to_string(kFaceBits) + "); reconstruct the cloud in parts");
