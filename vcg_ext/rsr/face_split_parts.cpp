@@ -37,25 +37,24 @@ Closing register_triangles(const RotationSystem& rs, std::uint32_t v1, std::uint
                            std::vector<LocalTriangle>& found, Region region) {
     found.clear();
     if (!has_common_neighbour(rs, v1, v2)) return Closing::Valid;
-    // r1 is just clockwise of v2 at v1; r2 just clockwise of v1 at v2. Their rotations are read
-    // last, and recording the triangle changes them.
+    // The triangle (a, apex, b) closed on the side where apex is just clockwise of b at a: a face
+    // iff apex follows a at b and a follows b at apex. apex's rotation is read last, and recording
+    // the triangle changes it. Valid: no triangle there, or `t` found.
+    const auto close = [&](std::uint32_t a, std::uint32_t b, std::uint32_t apex,
+                           const LocalTriangle& t) {
+        if (!rs.adjacent(b, apex) || ccw_angle(rs.angle(apex, b), rs.angle(apex, a)) >= M_PI)
+            return Closing::Valid;
+        if (!triangle_is_valid(rs, v1, v2, apex) || rs.successor_as_if_inserted(b, a) != apex)
+            return Closing::Invalid;
+        if (!region.holds(apex)) return Closing::Outside;
+        if (successor(rs, apex, b) != a) return Closing::Invalid;
+        found.push_back(t);
+        return Closing::Valid;
+    };
     const std::uint32_t r1 = rs.dart(v1, rs.wedge(v1, v2)).to;
     const std::uint32_t r2 = rs.dart(v2, rs.wedge(v2, v1)).to;
-    if (rs.adjacent(v2, r1) && ccw_angle(rs.angle(r1, v2), rs.angle(r1, v1)) < M_PI) {
-        // Triangle (v1, r1, v2): a face iff r1 follows v1 at v2 and v1 follows v2 at r1.
-        if (!triangle_is_valid(rs, v1, v2, r1) || rs.successor_as_if_inserted(v2, v1) != r1)
-            return Closing::Invalid;
-        if (!region.holds(r1)) return Closing::Outside;
-        if (successor(rs, r1, v2) != v1) return Closing::Invalid;
-        found.push_back({v1, r1, v2});
-    }
-    if (rs.adjacent(v1, r2) && ccw_angle(rs.angle(r2, v1), rs.angle(r2, v2)) < M_PI) {
-        if (!triangle_is_valid(rs, v1, v2, r2) || rs.successor_as_if_inserted(v1, v2) != r2)
-            return Closing::Invalid;
-        if (!region.holds(r2)) return Closing::Outside;
-        if (successor(rs, r2, v1) != v2) return Closing::Invalid;
-        found.push_back({v1, v2, r2});
-    }
+    if (const Closing c = close(v1, v2, r1, {v1, r1, v2}); c != Closing::Valid) return c;
+    if (const Closing c = close(v2, v1, r2, {v1, v2, r2}); c != Closing::Valid) return c;
     // Common neighbours but no triangle: the edge would cut across.
     return found.empty() ? Closing::Invalid : Closing::Valid;
 }
