@@ -20,18 +20,16 @@ namespace {
 using Edge = std::pair<std::uint32_t, std::uint32_t>;
 using Key = std::tuple<double, std::uint32_t, std::uint32_t>;
 
+// The undirected graph of `edges`, as the code builds its graphs (neighbour_graph.h).
 CsrGraph graph_of(std::size_t n, const std::set<Edge>& edges) {
-    std::vector<std::vector<std::uint32_t>> rows(n);
-    for (const auto& [a, b] : edges) {
-        rows[a].push_back(b);
-        rows[b].push_back(a);
+    CsrGraph directed;
+    auto edge = edges.begin();
+    for (std::uint32_t v = 0; v < n; ++v) {
+        for (; edge != edges.end() && edge->first == v; ++edge)
+            directed.adjacency.push_back(edge->second);
+        directed.offsets.push_back(directed.adjacency.size());
     }
-    CsrGraph g;
-    for (const auto& row : rows) {
-        g.adjacency.insert(g.adjacency.end(), row.begin(), row.end());
-        g.offsets.push_back(g.adjacency.size());
-    }
-    return g;
+    return symmetric_union(std::move(directed), {});
 }
 
 // The oracle: Prim's algorithm with a lazy queue of keyed edges, grown from the smallest vertex
