@@ -57,6 +57,41 @@ void spread_rows_in_place(std::vector<std::uint32_t>& a, std::vector<std::uint64
     }
 }
 
+// Sorts a row. Rows of up to kRankSortedRow entries (kNN rows: k = 70 by default) by rank:
+// each entry's place is the number of entries before it in the order, counted without a branch
+// (std::sort's comparisons of unordered indices mispredicted: 2.7 times slower at k = 70).
+void sort_row(std::uint32_t* row, std::size_t length) {
+    constexpr std::size_t kRankSortedRow = 128;
+    if (length > kRankSortedRow) {
+        std::sort(row, row + length);
+        return;
+    }
+    std::uint32_t copy[kRankSortedRow];
+    std::copy(row, row + length, copy);
+    for (std::size_t i = 0; i < length; ++i) {
+        const std::uint32_t v = copy[i];
+        std::uint32_t place = 0; // equal entries keep their order
+        for (std::size_t j = 0; j < i; ++j) place += copy[j] <= v;
+        for (std::size_t j = i + 1; j < length; ++j) place += copy[j] < v;
+        row[place] = v;
+    }
+}
+
+// Sorts row[0, sorted + added), whose first `sorted` entries are in order: the added ones are
+// sorted on their own and merged in from the back (the row has no free room; the added part
+// is copied out first). No two entries are equal.
+void merge_added_part(std::uint32_t* row, std::uint32_t sorted, std::uint32_t added) {
+    if (added == 0) return;
+    std::uint32_t* tail = row + sorted;
+    sort_row(tail, added);
+    if (sorted == 0 || row[sorted - 1] < tail[0]) return;
+    thread_local std::vector<std::uint32_t> spare;
+    spare.assign(tail, tail + added);
+    std::int64_t a = std::int64_t(sorted) - 1, b = std::int64_t(added) - 1;
+    for (std::int64_t out = std::int64_t(sorted + added) - 1; b >= 0; --out)
+        row[out] = a >= 0 && row[a] > spare[std::size_t(b)] ? row[a--] : spare[std::size_t(b--)];
+}
+
 } // namespace
 
 // Peak memory matters here: with k = 70 on a few hundred thousand points (the orientation
@@ -75,7 +110,7 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
     parallel_for(exec, n, [&](std::size_t i) { // sorted, without repeats or self loops
         auto first = a.begin() + std::ptrdiff_t(start[i]);
         auto last = a.begin() + std::ptrdiff_t(start[i + 1]);
-        std::sort(first, last);
+        sort_row(&*first, std::size_t(last - first));
         last = std::unique(first, last);
         last = std::remove(first, last, std::uint32_t(i));
         own[i] = std::uint32_t(last - first);
@@ -140,9 +175,11 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
         }
     });
     directed = CsrGraph();
+    // The own part of each row is sorted already: only the added part (about a tenth of a kNN
+    // row) is sorted, then merged in (sorting whole rows again was a third of the union).
     parallel_for(exec, n, [&](std::size_t i) {
-        std::sort(g.adjacency.begin() + std::ptrdiff_t(g.offsets[i]),
-                  g.adjacency.begin() + std::ptrdiff_t(g.offsets[i + 1]));
+        std::uint32_t* row = g.adjacency.data() + g.offsets[i];
+        merge_added_part(row, own[i], std::uint32_t(g.offsets[i + 1] - g.offsets[i]) - own[i]);
     });
     return g;
 }
