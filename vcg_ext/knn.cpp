@@ -17,10 +17,10 @@ struct KnnIndex::Tree {
 KnnIndex::KnnIndex(const std::vector<Vec3>& points) : KnnIndex(points, Execution{1, nullptr}) {}
 
 KnnIndex::KnnIndex(const std::vector<Vec3>& points, const Execution& exec)
-    : points_(points), size_(points.size()) {
+    : points_(points.data()), size_(points.size()) {
     // vcg's constructor reads points[0]: an empty tree must never be built.
-    if (points_.empty()) return;
-    tree_ = std::make_unique<Tree>(points_, exec);
+    if (points.empty()) return;
+    tree_ = std::make_unique<Tree>(points, exec);
     const auto& box = tree_->kd._getAABBox(); // vcglib's, of these points
     for (int a = 0; a < 3; ++a)
         coordinate_scale_ =

@@ -19,7 +19,8 @@ struct Neighbour {
 };
 
 /// A kd-tree over a fixed set of points. The tree copies the coordinates (rebuild it after
-/// moving points), but distances are recomputed from `points`, which must outlive the index.
+/// moving points), but distances are recomputed from `points`' storage, which must outlive the
+/// index: the vector may be moved (a move keeps its storage), not resized or reassigned.
 class KnnIndex {
 public:
     explicit KnnIndex(const std::vector<Vec3>& points);
@@ -62,7 +63,7 @@ public:
 private:
     struct Tree;
     std::unique_ptr<Tree> tree_;
-    const std::vector<Vec3>& points_;
+    const Vec3* points_; ///< the storage of the points the tree was built on
     std::size_t size_ = 0;
     double coordinate_scale_ = 0; ///< the largest |coordinate| of the points
 };

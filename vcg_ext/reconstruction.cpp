@@ -316,6 +316,17 @@ CoarseMesh coarse_mesh_of(const PreparedCloud& coarse, std::vector<Triangle> tri
     return coarse_mesh;
 }
 
+// §6 on the algorithm's positions. `index`: a kd-tree on them, or null.
+CollapsedCloud collapse_geometry(const std::vector<Vec3>& geometry,
+                                 const std::vector<Vec3>& normals, CollapseOptions options,
+                                 const Execution& exec, std::unique_ptr<KnnIndex> index) {
+    // D-24, D-47: never below min(N, 500) points, so small clouds still leave RsR enough.
+    const double floor =
+        double(std::min(geometry.size(), constants::kMinCoarsePoints)) / double(geometry.size());
+    options.collapse_ratio = std::max(options.collapse_ratio, floor);
+    return collapse(geometry, normals, options, exec, std::move(index));
+}
+
 // §7: the collapsed points, smoothed (tangent mode) and split into components like RsR's input.
 PreparedCloud hand_off(const PreparedCloud& cloud, const CollapsedCloud& collapsed,
                        const PreprocessOptions& options, const Execution& exec,
@@ -472,8 +483,9 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
                         const Execution& exec, ReconstructionReport& report,
                         rsr::Observer* observer, ReexpansionObserver* reexpansion_observer) {
     const PreprocessOptions& pre = options.rsr.preprocess;
-    PreparedCloud cloud = prepare_points(input, pre, exec, report.preprocess, nullptr,
-                                         PrepareFor::Collapse, InputOrder::Spatial);
+    std::unique_ptr<KnnIndex> index_of_positions;
+    PreparedCloud cloud = prepare_points(input, pre, exec, report.preprocess, PrepareFor::Collapse,
+                                         InputOrder::Spatial, {nullptr, &index_of_positions});
     std::vector<Vec3>().swap(input.normals);
     report.points_used = cloud.size();
     report.timings = report.preprocess.timings;
@@ -483,16 +495,14 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
         report.preprocess.denoised ? cloud.smoothed : cloud.positions;
     const std::vector<Vec3>& geometry_normals =
         cloud.smoothed_normals.empty() ? cloud.normals : cloud.smoothed_normals;
+    // The pre-processing's kd-tree, when on the positions the collapse reads, serves its graph.
+    if (&geometry != &cloud.positions) index_of_positions.reset();
 
     CollapsedCloud collapsed;
     {
         Timer timer(report.timings, "collapse");
-        // D-24, D-47: never below min(N, 500) points, so small clouds still leave RsR enough.
-        CollapseOptions collapse_options = options.collapse;
-        const double floor =
-            double(std::min(cloud.size(), constants::kMinCoarsePoints)) / double(cloud.size());
-        collapse_options.collapse_ratio = std::max(collapse_options.collapse_ratio, floor);
-        collapsed = collapse(geometry, geometry_normals, collapse_options, exec);
+        collapsed = collapse_geometry(geometry, geometry_normals, options.collapse, exec,
+                                      std::move(index_of_positions));
     }
     report.coarse_points = collapsed.survivors.size();
     report.collapse_tile_times = collapsed.tile_times;

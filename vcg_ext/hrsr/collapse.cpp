@@ -25,7 +25,8 @@ CollapsedCloud uncollapsed(const std::vector<Vec3>& positions, const std::vector
 } // namespace
 
 CollapsedCloud collapse(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
-                        const CollapseOptions& options, const Execution& exec) {
+                        const CollapseOptions& options, const Execution& exec,
+                        std::unique_ptr<KnnIndex> index_of_positions) {
     using namespace collapsing;
     validate(options);
     const std::size_t n = positions.size();
@@ -37,7 +38,11 @@ CollapsedCloud collapse(const std::vector<Vec3>& positions, const std::vector<Ve
     if (exec.progress) exec.progress->begin("collapse graph");
     const Tiles tiles(n);
     result.tiles = tiles.count;
-    auto rebuild = [&] { return build_graph(positions, normals, options.collapse_k, exec); };
+    // A restart of the tiles builds the graph again, with a kd-tree of its own.
+    auto rebuild = [&] {
+        return build_graph(positions, normals, options.collapse_k, exec,
+                           std::move(index_of_positions));
+    };
     CollapseGraph g = rebuild();
     if (exec.progress) exec.progress->begin("collapse");
     // D-42; one tile: the whole graph is the tile, in the global order exactly.

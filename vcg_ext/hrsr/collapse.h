@@ -3,12 +3,14 @@
 #pragma once
 
 #include "index_types.h"
+#include "knn.h"
 #include "options.h"
 #include "parallel.h"
 #include "point_set.h"
 #include "reconstruction_stats.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace hrsr {
@@ -35,8 +37,11 @@ struct CollapsedCloud {
 };
 
 /// Collapses the cloud (positions: the algorithm's unsmoothed coordinates; normals: unit,
-/// oriented). Deterministic (D-10); the kNN queries run in parallel.
+/// oriented). Deterministic (D-10); the kNN queries run in parallel. `index_of_positions`, if
+/// given, is a kd-tree on `positions` that the kNN graph uses instead of building one, and
+/// frees as soon as it is made, as it would its own (peak memory).
 CollapsedCloud collapse(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
-                        const CollapseOptions& options, const Execution& exec);
+                        const CollapseOptions& options, const Execution& exec,
+                        std::unique_ptr<KnnIndex> index_of_positions = nullptr);
 
 } // namespace hrsr

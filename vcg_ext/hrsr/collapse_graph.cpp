@@ -50,7 +50,7 @@ void CollapseGraph::erase(std::uint32_t c, std::uint32_t j) {
 }
 
 CollapseGraph build_graph(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
-                          int k, const Execution& exec) {
+                          int k, const Execution& exec, std::unique_ptr<KnnIndex> index) {
     const std::size_t n = positions.size();
     CollapseGraph g{positions,
                     normals,
@@ -59,11 +59,11 @@ CollapseGraph build_graph(const std::vector<Vec3>& positions, const std::vector<
                     std::vector<std::vector<std::uint32_t>>(n),
                     std::vector<std::uint32_t>(n)};
     for (std::uint32_t i = 0; i < n; ++i) g.into[i] = i;
-    KnnTable table; // the kd-tree and the kNN graphs are freed on return (peak memory)
-    {
-        const KnnIndex index(g.x, exec); // freed before the union's arrays are allocated
-        table = knn_table(index, k, exec);
-    }
+    // The kd-tree is freed before the union's arrays are allocated, the kNN graphs on return
+    // (peak memory).
+    if (!index) index = std::make_unique<KnnIndex>(g.x, exec);
+    KnnTable table = knn_table(*index, k, exec);
+    index.reset();
     const CsrGraph union_graph = symmetric_union(std::move(table), n, exec);
     // Each node's list is its own (by blocks of nodes in parallel).
     parallel_for_blocks(

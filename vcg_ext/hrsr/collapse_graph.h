@@ -59,7 +59,9 @@ private:
 };
 
 /// The graph over the symmetric kNN union (k = options' collapse_k), edges over 90° left out.
+/// `index`: a kd-tree on `positions`, or null (one is built here); freed once the kNN table is
+/// made.
 CollapseGraph build_graph(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
-                          int k, const Execution& exec);
+                          int k, const Execution& exec, std::unique_ptr<KnnIndex> index = nullptr);
 
 } // namespace hrsr::collapsing

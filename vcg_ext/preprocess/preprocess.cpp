@@ -160,9 +160,10 @@ CsrGraph neighbour_graph(const std::vector<Vec3>& positions, int k, const Execut
 }
 
 PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& options,
-                             const Execution& exec, PreprocessReport& report, CsrGraph* graph,
-                             PrepareFor purpose, InputOrder order) {
+                             const Execution& exec, PreprocessReport& report, PrepareFor purpose,
+                             InputOrder order, PreparedExtras extras) {
     validate(options);
+    if (extras.index_of_positions) extras.index_of_positions->reset();
     PreparedCloud cloud;
     {
         Phase phase(exec, report, "validation");
@@ -176,8 +177,9 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     const bool tangent = options.distance == DistanceMode::Tangent;
     // HRsR with input normals collapses the unsmoothed positions and smooths only the collapsed
     // cloud (§7): no smoothed copy of the full cloud; its kd-tree only serves the normal check.
-    if (purpose == PrepareFor::Collapse && !estimated && !graph) {
-        const KnnIndex index(cloud.positions, exec);
+    if (purpose == PrepareFor::Collapse && !estimated && !extras.graph) {
+        auto kept = std::make_unique<KnnIndex>(cloud.positions, exec);
+        const KnnIndex& index = *kept;
         check_input_orientation(index, cloud.normals, exec, report);
         if (tangent && noisy(cloud, index, exec, report)) {
             // D-33: noise moved the points along the surface too, away from where their input
@@ -190,6 +192,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
             cloud.smoothed = smoothed_positions(cloud.positions, cloud.smoothed_normals, options,
                                                 exec, report, &index, &reach);
         }
+        if (extras.index_of_positions) *extras.index_of_positions = std::move(kept);
         return cloud;
     }
     cloud.smoothed = cloud.positions;
@@ -222,7 +225,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
                                   " points had no defined PCA normal and took their nearest "
                                   "neighbour's");
 
-    if (estimated || graph) {
+    if (estimated || extras.graph) {
         CsrGraph g;
         std::vector<double> radius(cloud.size(), 0.0);
         {
@@ -239,7 +242,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
             report.orientation_flips = o.flips;
             report.orientation_components = o.components;
         }
-        if (graph) *graph = std::move(g);
+        if (extras.graph) *extras.graph = std::move(g);
     }
     if (purpose == PrepareFor::Collapse && report.denoised && estimated)
         // Smoothed again from the input positions along the final normals: the rounds above
@@ -319,7 +322,7 @@ PreparedCloud preprocess(const PointSet& input, const PreprocessOptions& options
                          const Execution& exec, PreprocessReport& report, InputOrder order) {
     CsrGraph graph;
     PreparedCloud cloud =
-        prepare_points(input, options, exec, report, &graph, PrepareFor::Rsr, order);
+        prepare_points(input, options, exec, report, PrepareFor::Rsr, order, {&graph, nullptr});
     ComponentSplit split;
     {
         Phase phase(exec, report, "component split");

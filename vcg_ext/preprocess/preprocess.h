@@ -13,6 +13,7 @@
 #include "preprocess/sanitize.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace hrsr {
@@ -56,14 +57,23 @@ enum class PrepareFor {
     Collapse ///< HRsR collapses it first (§2.2): smoothing only as part of normal estimation
 };
 
+/// What prepare_points hands back beside the cloud, where asked.
+struct PreparedExtras {
+    /// The symmetric kNN_k graph on the smoothed positions (built anyway when orienting).
+    CsrGraph* graph = nullptr;
+    /// The kd-tree built on the returned cloud's positions when one outlives the preparation
+    /// (HRsR with input normals), else null: the caller's next queries of those positions need
+    /// not build it again (keep the positions' storage in place while it lives).
+    std::unique_ptr<KnnIndex>* index_of_positions = nullptr;
+};
+
 /// §4.1–4.5: sanitising, normals (input or PCA), smoothing (tangent mode), orientation (when
-/// normals were estimated). If `graph` is given, it receives the symmetric kNN_k graph on the
-/// smoothed positions (built here anyway when orienting). Fills `report`; throws InvalidOption,
-/// InvalidInput (nothing usable left) or Cancelled.
+/// normals were estimated). Fills `report` and `extras`; throws InvalidOption, InvalidInput
+/// (nothing usable left) or Cancelled.
 PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& options,
                              const Execution& exec, PreprocessReport& report,
-                             CsrGraph* graph = nullptr, PrepareFor purpose = PrepareFor::Rsr,
-                             InputOrder order = InputOrder::Any);
+                             PrepareFor purpose = PrepareFor::Rsr,
+                             InputOrder order = InputOrder::Any, PreparedExtras extras = {});
 
 /// Tangent mode: two smoothing rounds with the normals fixed (§4.4, §7); Euclidean mode: a copy.
 /// `index_of_positions`, if given, is a kd-tree on `positions` the first round uses, and
