@@ -99,42 +99,49 @@ std::vector<TrianglePair> TriangleGrid::all_pairs(const TriangleGeometry& g,
     const std::size_t cells = cell_start_.size() - 1, block = 256;
     std::vector<std::vector<TrianglePair>> found((cells + block - 1) / block);
     parallel_for(exec, found.size(), [&](std::size_t b) {
-        struct Member {
-            std::uint32_t face;
-            Box box;
-            Cell low; ///< the cell of the box's low corner
-        };
-        thread_local std::vector<Member> members;
+        thread_local CellMembers members;
         for (std::size_t c = b * block; c < std::min(cells, (b + 1) * block); ++c) {
-            const std::uint64_t here = cell(entries_[cell_start_[c]]);
             members.clear();
             for (std::size_t e = cell_start_[c]; e < cell_start_[c + 1]; ++e) {
                 const std::uint32_t f = face(entries_[e]);
                 const Box box = g.box(g.triangle(f));
-                members.push_back({f, box, cell_of(box.lo)});
+                members.add(f, box, cell_of(box.lo));
             }
-            // Sweep along x: a member meets only those whose x range starts before its own ends.
-            std::sort(members.begin(), members.end(), [](const Member& s, const Member& t) {
-                return s.box.lo[0] < t.box.lo[0] || (s.box.lo[0] == t.box.lo[0] && s.face < t.face);
+            // A pair is tested in the first cell both boxes cover only: the cell of the larger
+            // low corner on each axis.
+            const std::uint64_t here = cell(entries_[cell_start_[c]]);
+            members.for_each_overlapping_pair([&](std::size_t s, std::size_t t) {
+                if (index(std::max(members.low[s][0], members.low[t][0]),
+                          std::max(members.low[s][1], members.low[t][1]),
+                          std::max(members.low[s][2], members.low[t][2])) != here)
+                    return;
+                const std::uint32_t fs = members.face[s], ft = members.face[t];
+                const Triangle &ts = g.triangle(fs), &tt = g.triangle(ft);
+                if (!share_embedded_fan(ts, tt, embedded_fan) && g.intersect_unboxed(ts, tt))
+                    found[b].emplace_back(std::min(fs, ft), std::max(fs, ft));
             });
-            for (std::size_t i = 0; i < members.size(); ++i)
-                for (std::size_t j = i + 1; j < members.size(); ++j) {
-                    const Member &s = members[i], &t = members[j];
-                    if (t.box.lo[0] > s.box.hi[0]) break;
-                    if (!s.box.overlaps(t.box)) continue;
-                    if (index(std::max(s.low[0], t.low[0]), std::max(s.low[1], t.low[1]),
-                              std::max(s.low[2], t.low[2])) != here)
-                        continue;
-                    const Triangle &ts = g.triangle(s.face), &tt = g.triangle(t.face);
-                    if (!share_embedded_fan(ts, tt, embedded_fan) && g.intersect_unboxed(ts, tt))
-                        found[b].emplace_back(std::min(s.face, t.face), std::max(s.face, t.face));
-                }
         }
     });
     std::vector<TrianglePair> pairs;
     for (const auto& f : found) pairs.insert(pairs.end(), f.begin(), f.end());
     std::sort(pairs.begin(), pairs.end());
     return pairs;
+}
+
+void TriangleGrid::CellMembers::clear() {
+    face.clear();
+    low.clear();
+    for (auto& bound : lo) bound.clear();
+    for (auto& bound : hi) bound.clear();
+}
+
+void TriangleGrid::CellMembers::add(std::uint32_t f, const Box& box, const Cell& cell_of_lo) {
+    face.push_back(f);
+    low.push_back(cell_of_lo);
+    for (int k = 0; k < 3; ++k) {
+        lo[k].push_back(box.lo[k]);
+        hi[k].push_back(box.hi[k]);
+    }
 }
 
 // Entries come in face order; a stable radix sort on the cell (4 × 8 bits) leaves them sorted

@@ -148,6 +148,65 @@ private:
     void file_faces(const TriangleGeometry& g, const Execution& exec);
     static void sort_by_cell(std::vector<std::uint64_t>& entries, const Execution& exec);
     using Cell = std::array<std::uint64_t, 3>;
+    /// The faces filed in one cell, their boxes by coordinate (all_pairs' box tests run over
+    /// them without a branch).
+    struct CellMembers {
+        std::vector<std::uint32_t> face;
+        std::vector<Cell> low; ///< the cell of each box's low corner
+        std::array<std::vector<double>, 3> lo, hi;
+        std::vector<std::uint32_t> candidates;
+
+        void clear();
+        void add(std::uint32_t f, const Box& box, const Cell& cell_of_lo);
+        /// Calls visit(s, t) for every pair of members whose boxes overlap (Box::overlaps),
+        /// once.
+        template <class Visit>
+        void for_each_overlapping_pair(Visit&& visit) {
+            const std::size_t m = face.size();
+            candidates.resize(m);
+            if (m > kAllPairsMembers) {
+                sweep_overlapping_pairs(visit);
+                return;
+            }
+            for (std::size_t s = 0; s < m; ++s) {
+                // Most pairs of a cell do not overlap, unpredictably: the tests are computed for
+                // every t and the overlapping ones listed without a branch.
+                std::size_t count = 0;
+                for (std::size_t t = s + 1; t < m; ++t) {
+                    candidates[count] = std::uint32_t(t);
+                    count += overlap(s, t);
+                }
+                for (std::size_t c = 0; c < count; ++c) visit(s, candidates[c]);
+            }
+        }
+
+    private:
+        /// Above this many members a cell's pairs are swept along x instead (a dense part of
+        /// a mesh puts many more faces than the mean in a cell).
+        static constexpr std::size_t kAllPairsMembers = 48;
+        bool overlap(std::size_t s, std::size_t t) const {
+            // int: all six compared (no branch), as Box::overlaps decides
+            return (int(lo[0][t] <= hi[0][s]) & int(lo[0][s] <= hi[0][t]) &
+                    int(lo[1][t] <= hi[1][s]) & int(lo[1][s] <= hi[1][t]) &
+                    int(lo[2][t] <= hi[2][s]) & int(lo[2][s] <= hi[2][t])) != 0;
+        }
+        /// The members by the low x of their boxes: one meets only those whose x range starts
+        /// before its own ends.
+        template <class Visit>
+        void sweep_overlapping_pairs(Visit&& visit) {
+            const std::size_t m = face.size();
+            for (std::size_t s = 0; s < m; ++s) candidates[s] = std::uint32_t(s);
+            std::sort(candidates.begin(), candidates.end(), [&](std::uint32_t s, std::uint32_t t) {
+                return lo[0][s] < lo[0][t] || (lo[0][s] == lo[0][t] && s < t);
+            });
+            for (std::size_t i = 0; i < m; ++i)
+                for (std::size_t j = i + 1; j < m; ++j) {
+                    const std::uint32_t s = candidates[i], t = candidates[j];
+                    if (lo[0][t] > hi[0][s]) break;
+                    if (overlap(s, t)) visit(s, t);
+                }
+        }
+    };
     static std::uint64_t cell(std::uint64_t entry) { return entry >> 32; }
     static std::uint32_t face(std::uint64_t entry) { return std::uint32_t(entry); }
     Cell cell_of(const Vec3& p) const {
