@@ -110,7 +110,7 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
     parallel_for(exec, n, [&](std::size_t i) { // sorted, without repeats or self loops
         auto first = a.begin() + std::ptrdiff_t(start[i]);
         auto last = a.begin() + std::ptrdiff_t(start[i + 1]);
-        sort_row(&*first, std::size_t(last - first));
+        sort_row(a.data() + start[i], std::size_t(last - first)); // a row may be empty
         last = std::unique(first, last);
         last = std::remove(first, last, std::uint32_t(i));
         own[i] = std::uint32_t(last - first);
@@ -163,8 +163,8 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
                         g.adjacency.begin() + std::ptrdiff_t(g.offsets[i]));
         });
     }
-    // The missing relations go after each row's own ones (where within a row does not matter:
-    // rows are sorted last); the own parts are only read meanwhile.
+    // The missing relations go after each row's own ones, in any order (they are sorted and
+    // merged in last); the own parts are only read meanwhile.
     for (std::size_t i = 0; i < n; ++i) missing[i].store(0, std::memory_order_relaxed);
     parallel_for(exec, n, [&](std::size_t i) {
         for (std::uint32_t t = 0; t < own[i]; ++t) {

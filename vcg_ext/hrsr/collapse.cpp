@@ -32,7 +32,10 @@ CollapsedCloud collapse(const std::vector<Vec3>& positions, const std::vector<Ve
     const std::size_t n = positions.size();
     const std::size_t budget =
         n - std::min(n, std::size_t(std::llround(double(n) * options.collapse_ratio)));
-    if (budget == 0) return uncollapsed(positions, normals);
+    if (budget == 0) {
+        index_of_positions.reset(); // before the copies (peak memory)
+        return uncollapsed(positions, normals);
+    }
     CollapsedCloud result;
     result.budget = budget;
     if (exec.progress) exec.progress->begin("collapse graph");

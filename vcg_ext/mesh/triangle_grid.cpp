@@ -111,9 +111,9 @@ std::vector<TrianglePair> TriangleGrid::all_pairs(const TriangleGeometry& g,
             // low corner on each axis.
             const std::uint64_t here = cell(entries_[cell_start_[c]]);
             members.for_each_overlapping_pair([&](std::size_t s, std::size_t t) {
-                if (index(std::max(members.low[s][0], members.low[t][0]),
-                          std::max(members.low[s][1], members.low[t][1]),
-                          std::max(members.low[s][2], members.low[t][2])) != here)
+                if (index(std::max(members.corner_cell[s][0], members.corner_cell[t][0]),
+                          std::max(members.corner_cell[s][1], members.corner_cell[t][1]),
+                          std::max(members.corner_cell[s][2], members.corner_cell[t][2])) != here)
                     return;
                 const std::uint32_t fs = members.face[s], ft = members.face[t];
                 const Triangle &ts = g.triangle(fs), &tt = g.triangle(ft);
@@ -130,14 +130,14 @@ std::vector<TrianglePair> TriangleGrid::all_pairs(const TriangleGeometry& g,
 
 void TriangleGrid::CellMembers::clear() {
     face.clear();
-    low.clear();
+    corner_cell.clear();
     for (auto& bound : lo) bound.clear();
     for (auto& bound : hi) bound.clear();
 }
 
 void TriangleGrid::CellMembers::add(std::uint32_t f, const Box& box, const Cell& cell_of_lo) {
     face.push_back(f);
-    low.push_back(cell_of_lo);
+    corner_cell.push_back(cell_of_lo);
     for (int k = 0; k < 3; ++k) {
         lo[k].push_back(box.lo[k]);
         hi[k].push_back(box.hi[k]);

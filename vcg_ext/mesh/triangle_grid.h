@@ -152,7 +152,7 @@ private:
     /// them without a branch).
     struct CellMembers {
         std::vector<std::uint32_t> face;
-        std::vector<Cell> low; ///< the cell of each box's low corner
+        std::vector<Cell> corner_cell; ///< the cell of each box's low corner
         std::array<std::vector<double>, 3> lo, hi;
         std::vector<std::uint32_t> candidates;
 
@@ -185,7 +185,7 @@ private:
         /// a mesh puts many more faces than the mean in a cell).
         static constexpr std::size_t kAllPairsMembers = 48;
         bool overlap(std::size_t s, std::size_t t) const {
-            // int: all six compared (no branch), as Box::overlaps decides
+            // int: all six compared (no branch); Box::overlaps for finite coordinates
             return (int(lo[0][t] <= hi[0][s]) & int(lo[0][s] <= hi[0][t]) &
                     int(lo[1][t] <= hi[1][s]) & int(lo[1][s] <= hi[1][t]) &
                     int(lo[2][t] <= hi[2][s]) & int(lo[2][s] <= hi[2][t])) != 0;
