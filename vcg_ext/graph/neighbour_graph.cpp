@@ -108,10 +108,9 @@ CsrGraph symmetric_union(CsrGraph directed, const Execution& exec) {
     std::vector<std::uint64_t>& start = directed.offsets; // row i: own[i] entries from start[i]
     std::vector<std::uint32_t> own(n, 0);
     parallel_for(exec, n, [&](std::size_t i) { // sorted, without repeats or self loops
+        sort_row(a.data() + start[i], std::size_t(start[i + 1] - start[i])); // may be empty
         auto first = a.begin() + std::ptrdiff_t(start[i]);
-        auto last = a.begin() + std::ptrdiff_t(start[i + 1]);
-        sort_row(a.data() + start[i], std::size_t(last - first)); // a row may be empty
-        last = std::unique(first, last);
+        auto last = std::unique(first, a.begin() + std::ptrdiff_t(start[i + 1]));
         last = std::remove(first, last, std::uint32_t(i));
         own[i] = std::uint32_t(last - first);
     });
