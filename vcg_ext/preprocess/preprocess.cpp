@@ -64,17 +64,19 @@ struct Neighbourhoods {
     NeighbourReach& reach;
 };
 
-void smooth(std::vector<Vec3>& positions, const std::vector<Vec3>& normals, Neighbourhoods near,
-            bool oriented, const PreprocessOptions& options, const Execution& exec,
-            PreprocessReport& report) {
+// One round's positions. They are returned, not assigned: `near.index` is built on `positions`
+// (knn.h: its storage must outlive the tree), so the caller replaces them once the tree is gone.
+std::vector<Vec3> smooth(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+                         Neighbourhoods near, bool oriented, const PreprocessOptions& options,
+                         const Execution& exec, PreprocessReport& report) {
     Phase phase(exec, report, "smoothing");
     report.smoothing_neighbours = neighbour_count(positions.size(), options.k_smoothing);
     SmoothingResult s = smooth_along_normals(
         positions, normals, near.index, report.smoothing_neighbours, oriented, exec, &near.reach);
-    positions = std::move(s.positions);
     ++report.smoothing_rounds;
     report.smoothing_mean_shift = s.mean_shift; // normalised units = fraction of the diagonal
     report.smoothing_max_shift = s.max_shift;
+    return std::move(s.positions);
 }
 
 // Input normals are used as given; half of them flipped gives two interleaved surfaces, one per
@@ -134,6 +136,23 @@ void average_normals_if_noisy(PreparedCloud& cloud, const KnnIndex& index,
         cloud.normals = neighbourhood_mean_normals(cloud, index, options, exec, reach);
 }
 
+// §4.4's two rounds on the whole cloud, each through a kd-tree of the previous round's
+// positions (`index` comes in on cloud.smoothed and leaves on the last round's), the normals
+// re-estimated after each where they are estimated.
+void smoothing_rounds(PreparedCloud& cloud, std::unique_ptr<KnnIndex>& index, NeighbourReach& reach,
+                      bool estimated, const PreprocessOptions& options, const Execution& exec,
+                      PreprocessReport& report) {
+    for (int round = 0; round < 2; ++round) {
+        std::vector<Vec3> next = smooth(cloud.smoothed, cloud.normals, {*index, reach}, !estimated,
+                                        options, exec, report);
+        index.reset(); // built on the positions being replaced
+        cloud.smoothed = std::move(next);
+        index = std::make_unique<KnnIndex>(cloud.smoothed, exec);
+        if (estimated)
+            cloud.normals = estimate(cloud.smoothed, *index, options, exec, report, reach);
+    }
+}
+
 } // namespace
 
 std::vector<Vec3> smoothed_positions(const std::vector<Vec3>& positions,
@@ -146,10 +165,14 @@ std::vector<Vec3> smoothed_positions(const std::vector<Vec3>& positions,
     NeighbourReach own_reach;
     NeighbourReach& reach = reach_of_positions ? *reach_of_positions : own_reach;
     for (int round = 0; round < 2; ++round) {
-        std::optional<KnnIndex> own; // each round reads the previous one's positions
-        const KnnIndex& index =
-            round == 0 && index_of_positions ? *index_of_positions : own.emplace(smoothed, exec);
-        smooth(smoothed, normals, {index, reach}, true, options, exec, report);
+        std::vector<Vec3> next;
+        {
+            std::optional<KnnIndex> own; // each round reads the previous one's positions
+            const KnnIndex& index = round == 0 && index_of_positions ? *index_of_positions
+                                                                     : own.emplace(smoothed, exec);
+            next = smooth(smoothed, normals, {index, reach}, true, options, exec, report);
+        }
+        smoothed = std::move(next);
     }
     return smoothed;
 }
@@ -211,15 +234,8 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
         average_normals_if_noisy(cloud, *index, options, exec, report, reach);
     // With input normals, HRsR needs no smoothing of the full cloud: it collapses the unsmoothed
     // positions and smooths the collapsed cloud (§7).
-    if (tangent && (estimated || purpose == PrepareFor::Rsr)) {
-        for (int round = 0; round < 2; ++round) {
-            smooth(cloud.smoothed, cloud.normals, {*index, reach}, !estimated, options, exec,
-                   report);
-            index = std::make_unique<KnnIndex>(cloud.smoothed, exec);
-            if (estimated)
-                cloud.normals = estimate(cloud.smoothed, *index, options, exec, report, reach);
-        }
-    }
+    if (tangent && (estimated || purpose == PrepareFor::Rsr))
+        smoothing_rounds(cloud, index, reach, estimated, options, exec, report);
     if (report.pca_degenerate > 0)
         report.warnings.push_back(std::to_string(report.pca_degenerate) +
                                   " points had no defined PCA normal and took their nearest "
