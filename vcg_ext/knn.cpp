@@ -3,6 +3,7 @@
 #include "knn_tree.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <new>
@@ -162,7 +163,7 @@ bool KnnIndex::at_least(const Vec3& p, double radius, std::size_t count,
 }
 
 bool KnnIndex::neighbours_within(std::uint32_t i, double radius, int k, std::vector<Neighbour>& out,
-                                 bool walk_order) const {
+                                 bool walk_order, std::size_t at_most) const {
     out.clear();
     if (!tree_) return k <= 0;
     if (k <= 0) return true;
@@ -172,11 +173,13 @@ bool KnnIndex::neighbours_within(std::uint32_t i, double radius, int k, std::vec
     const double relative = 1e-6, absolute = 1e-6 * coordinate_scale_;
     const double gathered = radius * (1 + relative) + absolute; // holds a near tie of the k-th
     const auto& slot_points = tree_->kd.slot_points();
-    visit_within(tree_->kd, points_[i], gathered * gathered, [&](unsigned slot, double squared) {
-        if (slot_points[slot] != i) out.push_back({slot_points[slot], squared});
-        return false;
-    });
-    if (out.size() < std::size_t(k)) return false;
+    const bool too_many = visit_within(tree_->kd, points_[i], gathered * gathered,
+                                       [&](unsigned slot, double squared) {
+                                           if (slot_points[slot] != i)
+                                               out.push_back({slot_points[slot], squared});
+                                           return out.size() > at_most;
+                                       });
+    if (too_many || out.size() < std::size_t(k)) return false;
     thread_local std::vector<double> distances;
     distances.resize(out.size());
     for (std::size_t e = 0; e < out.size(); ++e) distances[e] = out[e].squared_distance;
@@ -220,7 +223,48 @@ float rounded_up(double r) {
 }
 } // namespace
 
+namespace {
+// A NeighbourReach round meets its points in spatial order (D-40), so the point a thread served
+// last lies near the next one and was about as densely sampled: its k-th distance, a little
+// wider, is the next one's first radius to try where no radius is kept (the first round, and
+// points the smoothing moved too far). Only the work depends on it: neighbours_within keeps the
+// k nearest only where its ball holds them and leaves ties at the k-th to vcglib's query, and
+// the walk meets them in the same order whatever its radius, so the neighbours and their order
+// do not (nor on the thread count). The bunny scans without normals: the first two PCA rounds
+// 5.8 → 3.4 s each at one thread (docs/BENCHMARKS.md, session 43).
+constexpr double kGuessWidening = 1.1;
+// A guess that gathers more than this many times k (a point after an outlier) is given up.
+constexpr std::size_t kMaxGatheredPerNeighbour = 4;
+
+std::atomic<std::uint64_t> last_pass{0}; // rounds numbered apart: no guess from another round
+
+struct LastReach {
+    std::uint64_t pass = 0;
+    double radius = 0;
+};
+thread_local LastReach last_reach;
+
+double guessed_radius(std::uint64_t pass) {
+    return last_reach.pass == pass ? last_reach.radius * kGuessWidening : 0;
+}
+
+// The k nearest of point i by the guess, where it holds them; false where it does not.
+bool neighbours_by_guess(const KnnIndex& index, std::uint32_t i, int k, std::uint64_t pass,
+                         std::vector<Neighbour>& out) {
+    const double radius = guessed_radius(pass);
+    return radius > 0 && index.neighbours_within(i, radius, k, out, true,
+                                                 kMaxGatheredPerNeighbour * std::size_t(k) + 64);
+}
+
+void remember_reach(std::uint64_t pass, const std::vector<Neighbour>& found) {
+    double farthest = 0;
+    for (const Neighbour& n : found) farthest = std::max(farthest, n.squared_distance);
+    last_reach = {pass, std::sqrt(farthest)};
+}
+} // namespace
+
 void NeighbourReach::begin_round(std::size_t points, int k) {
+    pass_ = ++last_pass;
     if (k == k_ && radius_.size() == points) return;
     k_ = k;
     radius_.assign(points, 0.0f);
@@ -229,7 +273,10 @@ void NeighbourReach::begin_round(std::size_t points, int k) {
 void NeighbourReach::neighbours(const KnnIndex& index, std::uint32_t i,
                                 std::vector<Neighbour>& out) {
     const double radius = radius_[i];
-    if (!(radius > 0 && index.neighbours_within(i, radius * (1 + kRadiusMargin), k_, out, true))) {
+    const bool found = radius > 0
+                           ? index.neighbours_within(i, radius * (1 + kRadiusMargin), k_, out, true)
+                           : neighbours_by_guess(index, i, k_, pass_, out);
+    if (!found) {
         // The k-th distance by vcglib's query, then the points within it in the walk's order;
         // tied at the k-th, the query's own (sorted).
         thread_local std::vector<int> rank(1);
@@ -241,9 +288,8 @@ void NeighbourReach::neighbours(const KnnIndex& index, std::uint32_t i,
               index.neighbours_within(i, reach * (1 + kRadiusMargin), k_, out, true)))
             index.neighbours_of(i, k_, out);
     }
-    double farthest = 0;
-    for (const Neighbour& n : out) farthest = std::max(farthest, n.squared_distance);
-    radius_[i] = rounded_up(std::sqrt(farthest));
+    remember_reach(pass_, out);
+    radius_[i] = rounded_up(last_reach.radius);
 }
 
 void NeighbourReach::moved(const std::vector<Vec3>& before, const std::vector<double>& shift,

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -54,9 +55,11 @@ public:
     /// False, and `out` unspecified, when fewer than k lie there or the next one is within a
     /// millionth of the k-th's distance: vcglib's query prunes its walk in single precision,
     /// so which of such near ties it keeps, only its walk decides. With `walk_order` the k are
-    /// left in the order the walk met them, unsorted. Thread-safe.
+    /// left in the order the walk met them, unsorted. Also false once more than `at_most`
+    /// points are gathered (a radius far too wide: the walk stops there). Thread-safe.
     bool neighbours_within(std::uint32_t i, double radius, int k, std::vector<Neighbour>& out,
-                           bool walk_order = false) const;
+                           bool walk_order = false,
+                           std::size_t at_most = std::numeric_limits<std::size_t>::max()) const;
     /// Every data point within `radius` of p, in no particular order. `out` is overwritten.
     void within(const Vec3& p, double radius, std::vector<std::uint32_t>& out) const;
 
@@ -82,8 +85,9 @@ public:
     void begin_round(std::size_t points, int k);
     /// The round's k nearest others of point i of `index`'s points (KnnIndex::neighbours_of's
     /// set) in the order of the kd-tree's walk from the point: by the kept radius where there is
-    /// one, else by the radius vcglib's query finds (neighbours_of's own order where the k-th is
-    /// tied). The k-th distance is kept for the next round. Thread-safe for distinct i.
+    /// one, else by the last point's in this round on this thread, widened (knn.cpp), else by
+    /// the radius vcglib's query finds (neighbours_of's own order where the k-th is tied). The
+    /// k-th distance is kept for the next round. Thread-safe for distinct i.
     void neighbours(const KnnIndex& index, std::uint32_t i, std::vector<Neighbour>& out);
     /// The points moved from `before`, point i by at most |shift[i]| (the next rounds read a
     /// kd-tree of the new positions): a radius grows by its own point's shift and the largest
@@ -106,6 +110,7 @@ private:
     /// A ball spanning more cells than 1 + this a side keeps no radius (its query as it comes).
     static constexpr std::size_t kMaxCellsAcrossBall = 6;
     int k_ = 0;
+    std::uint64_t pass_ = 0;    ///< this round's number among all rounds (knn.cpp's guesses)
     std::vector<float> radius_; ///< per point, rounded up; 0: unknown
 };
 

@@ -2,6 +2,7 @@
 #include "knn.h"
 #include "knn_tree.h"
 #include "samplers.h"
+#include "spatial_order.h"
 
 #include <gtest/gtest.h>
 
@@ -260,6 +261,61 @@ TEST(NeighbourReach, EveryRoundFindsTheKNearestOfThePointsAsTheyStand) {
     reach.neighbours(index, 17, by_reach);
     index.neighbours_of(17, k + 5, by_query);
     EXPECT_EQ(indices_of(by_reach), indices_of(by_query));
+}
+
+// Where no radius is kept, a round tries the last radius its thread found (widened): whatever
+// that guess, each point's neighbours are the k nearest in the walk's order, as found from
+// vcglib's k-th distance. A grid (ties at every rank), copies of a point, a dense cluster beside
+// sparse points and far outliers (a guess taken after them gathers too much and is given up),
+// in spatial order as the pipeline has them, on 1, 2 and 8 threads.
+TEST(NeighbourReach, AGuessedRadiusFindsWhatTheKNearestQueryFinds) {
+    std::vector<Vec3> points = grid_duplicates_and_sphere();
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int i = 0; i < 1500; ++i)
+        points.emplace_back(3 + 0.05 * unit(random), 3 + 0.05 * unit(random), 0.05 * unit(random));
+    for (int i = 0; i < 6; ++i) points.emplace_back(40.0 * (i + 1), -30.0 * i, 55.0);
+    std::vector<Vec3> ordered;
+    for (std::uint32_t i : spatial_order(points, {}).input_index) ordered.push_back(points[i]);
+    const KnnIndex index(ordered);
+    for (const int k : {1, 12, 40}) {
+        std::vector<std::vector<Neighbour>> expected(ordered.size());
+        std::vector<int> rank{k};
+        std::vector<double> kth;
+        for (std::uint32_t i = 0; i < ordered.size(); ++i) {
+            index.squared_distances_at_ranks(i, rank, kth);
+            const double reach = std::sqrt(kth.front()) * (1 + 1e-9);
+            if (!index.neighbours_within(i, reach, k, expected[i], true))
+                index.neighbours_of(i, k, expected[i]);
+        }
+        for (const int threads : {1, 2, 8}) {
+            NeighbourReach reach;
+            reach.begin_round(ordered.size(), k);
+            std::vector<std::vector<Neighbour>> found(ordered.size());
+            parallel_for(Execution{threads, nullptr}, ordered.size(), [&](std::size_t i) {
+                reach.neighbours(index, std::uint32_t(i), found[i]);
+            });
+            const auto in_order = [](const std::vector<Neighbour>& n) {
+                std::vector<std::uint32_t> ids;
+                for (const Neighbour& e : n) ids.push_back(e.index);
+                return ids;
+            };
+            for (std::uint32_t i = 0; i < ordered.size(); ++i)
+                ASSERT_EQ(in_order(found[i]), in_order(expected[i]))
+                    << "k " << k << " threads " << threads << " point " << i;
+        }
+    }
+}
+
+TEST(Knn, WithinGivesUpPastWhatItMayGather) {
+    const std::vector<Vec3> points = grid_duplicates_and_sphere();
+    const KnnIndex index(points);
+    std::vector<Neighbour> found;
+    const std::uint32_t on_sphere = 200; // no ties
+    EXPECT_TRUE(index.neighbours_within(on_sphere, 1e6, 10, found));
+    EXPECT_EQ(found.size(), 10U);
+    EXPECT_FALSE(index.neighbours_within(on_sphere, 1e6, 10, found, false, 50));
+    EXPECT_TRUE(index.neighbours_within(on_sphere, 1e6, 10, found, false, points.size()));
 }
 
 TEST(NeighbourGraph, SymmetricUnionIsSymmetricSortedAndLoopFree) {
