@@ -225,15 +225,13 @@ float rounded_up(double r) {
 
 namespace {
 // A NeighbourReach round meets its points in spatial order (D-40), so the point a thread served
-// last lies near the next one and was about as densely sampled: its k-th distance, a little
-// wider, is the next one's first radius to try where no radius is kept (the first round, and
-// points the smoothing moved too far). Only the work depends on it: neighbours_within keeps the
-// k nearest only where its ball holds them and leaves ties at the k-th to vcglib's query, and
-// the walk meets them in the same order whatever its radius, so the neighbours and their order
-// do not (nor on the thread count). The bunny scans without normals: the first two PCA rounds
-// 5.8 → 3.4 s each at one thread (docs/BENCHMARKS.md, session 43).
+// last lies near the next one and was about as densely sampled: its k-th distance, widened, is
+// the next one's first radius to try where none is kept. A guess changes only the work: it is
+// taken only where it holds the k nearest, beyond the k-th by the margin the query's radius has
+// and with no tie there, and the walk meets them in the same order whatever its radius
+// (docs/BENCHMARKS.md, session 43).
 constexpr double kGuessWidening = 1.1;
-// A guess that gathers more than this many times k (a point after an outlier) is given up.
+// A guess that gathers more than this many times k, plus a few, is given up (after an outlier).
 constexpr std::size_t kMaxGatheredPerNeighbour = 4;
 
 std::atomic<std::uint64_t> last_pass{0}; // rounds numbered apart: no guess from another round
@@ -248,12 +246,19 @@ double guessed_radius(std::uint64_t pass) {
     return last_reach.pass == pass ? last_reach.radius * kGuessWidening : 0;
 }
 
-// The k nearest of point i by the guess, where it holds them; false where it does not.
+// The k nearest of point i by the guess where the path by vcglib's k-th distance would find
+// them in the same order: not at a k-th distance of 0 (copies of the point: that path sorts
+// them), nor within its margin of the guess.
 bool neighbours_by_guess(const KnnIndex& index, std::uint32_t i, int k, std::uint64_t pass,
                          std::vector<Neighbour>& out) {
     const double radius = guessed_radius(pass);
-    return radius > 0 && index.neighbours_within(i, radius, k, out, true,
-                                                 kMaxGatheredPerNeighbour * std::size_t(k) + 64);
+    if (!(radius > 0 && index.neighbours_within(i, radius, k, out, true,
+                                                kMaxGatheredPerNeighbour * std::size_t(k) + 64)))
+        return false;
+    double farthest = 0;
+    for (const Neighbour& n : out) farthest = std::max(farthest, n.squared_distance);
+    const double kth = std::sqrt(farthest);
+    return kth > 0 && kth * (1 + kRadiusMargin) <= radius;
 }
 
 void remember_reach(std::uint64_t pass, const std::vector<Neighbour>& found) {

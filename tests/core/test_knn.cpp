@@ -283,9 +283,10 @@ TEST(NeighbourReach, AGuessedRadiusFindsWhatTheKNearestQueryFinds) {
         std::vector<int> rank{k};
         std::vector<double> kth;
         for (std::uint32_t i = 0; i < ordered.size(); ++i) {
-            index.squared_distances_at_ranks(i, rank, kth);
-            const double reach = std::sqrt(kth.front()) * (1 + 1e-9);
-            if (!index.neighbours_within(i, reach, k, expected[i], true))
+            index.squared_distances_at_ranks(i, rank, kth); // the path without a guess
+            const double reach = std::sqrt(kth.front());
+            if (!(reach > 0 && std::isfinite(reach) &&
+                  index.neighbours_within(i, reach * (1 + 1e-9), k, expected[i], true)))
                 index.neighbours_of(i, k, expected[i]);
         }
         for (const int threads : {1, 2, 8}) {
@@ -307,6 +308,25 @@ TEST(NeighbourReach, AGuessedRadiusFindsWhatTheKNearestQueryFinds) {
     }
 }
 
+// Point 2 has exactly k copies at 0 and the next point far: without a guess its k-th distance
+// is 0 and its neighbours come sorted by index; the guess the point before leaves must not give
+// them in the walk's order instead (vcglib's split can reverse copies in a leaf).
+TEST(NeighbourReach, CopiesAtTheKthDistanceComeAsWithoutAGuess) {
+    const std::vector<Vec3> points{{10, 0, 0}, {11, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    const KnnIndex index(points);
+    std::vector<Neighbour> expected, found;
+    index.neighbours_of(2, 2, expected);
+    NeighbourReach reach;
+    reach.begin_round(points.size(), 2);
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+        reach.neighbours(index, i, found);
+        if (i != 2) continue;
+        ASSERT_EQ(found.size(), 2U);
+        EXPECT_EQ(found[0].index, expected[0].index);
+        EXPECT_EQ(found[1].index, expected[1].index);
+    }
+}
+
 TEST(Knn, WithinGivesUpPastWhatItMayGather) {
     const std::vector<Vec3> points = grid_duplicates_and_sphere();
     const KnnIndex index(points);
@@ -315,7 +335,9 @@ TEST(Knn, WithinGivesUpPastWhatItMayGather) {
     EXPECT_TRUE(index.neighbours_within(on_sphere, 1e6, 10, found));
     EXPECT_EQ(found.size(), 10U);
     EXPECT_FALSE(index.neighbours_within(on_sphere, 1e6, 10, found, false, 50));
-    EXPECT_TRUE(index.neighbours_within(on_sphere, 1e6, 10, found, false, points.size()));
+    // Every other point lies within the radius: gathering them all is allowed, one fewer not.
+    EXPECT_TRUE(index.neighbours_within(on_sphere, 1e6, 10, found, false, points.size() - 1));
+    EXPECT_FALSE(index.neighbours_within(on_sphere, 1e6, 10, found, false, points.size() - 2));
 }
 
 TEST(NeighbourGraph, SymmetricUnionIsSymmetricSortedAndLoopFree) {

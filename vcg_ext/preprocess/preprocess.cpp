@@ -64,8 +64,9 @@ struct Neighbourhoods {
     NeighbourReach& reach;
 };
 
-// One round's positions. They are returned, not assigned: `near.index` is built on `positions`
-// (knn.h: its storage must outlive the tree), so the caller replaces them once the tree is gone.
+// One round's positions. They are returned, not assigned: `near.index` may be built on
+// `positions` (knn.h: their storage must outlive the tree), so the caller replaces them once the
+// tree is gone.
 std::vector<Vec3> smooth(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
                          Neighbourhoods near, bool oriented, const PreprocessOptions& options,
                          const Execution& exec, PreprocessReport& report) {
