@@ -221,9 +221,7 @@ float rounded_up(double r) {
     const auto f = float(r);
     return double(f) >= r ? f : std::nextafter(f, HUGE_VALF);
 }
-} // namespace
 
-namespace {
 // A NeighbourReach round meets its points in spatial order (D-40), so the point a thread served
 // last lies near the next one and was about as densely sampled: its k-th distance, widened, is
 // the next one's first radius to try where none is kept. A guess changes only the work: it is
@@ -246,6 +244,13 @@ double guessed_radius(std::uint64_t pass) {
     return last_reach.pass == pass ? last_reach.radius * kGuessWidening : 0;
 }
 
+// The distance of the farthest of `found` (the k-th of the k nearest).
+double farthest_of(const std::vector<Neighbour>& found) {
+    double farthest = 0;
+    for (const Neighbour& n : found) farthest = std::max(farthest, n.squared_distance);
+    return std::sqrt(farthest);
+}
+
 // The k nearest of point i by the guess where the path by vcglib's k-th distance would find
 // them in the same order: not at a k-th distance of 0 (copies of the point: that path sorts
 // them), nor within its margin of the guess.
@@ -255,16 +260,8 @@ bool neighbours_by_guess(const KnnIndex& index, std::uint32_t i, int k, std::uin
     if (!(radius > 0 && index.neighbours_within(i, radius, k, out, true,
                                                 kMaxGatheredPerNeighbour * std::size_t(k) + 64)))
         return false;
-    double farthest = 0;
-    for (const Neighbour& n : out) farthest = std::max(farthest, n.squared_distance);
-    const double kth = std::sqrt(farthest);
+    const double kth = farthest_of(out);
     return kth > 0 && kth * (1 + kRadiusMargin) <= radius;
-}
-
-void remember_reach(std::uint64_t pass, const std::vector<Neighbour>& found) {
-    double farthest = 0;
-    for (const Neighbour& n : found) farthest = std::max(farthest, n.squared_distance);
-    last_reach = {pass, std::sqrt(farthest)};
 }
 } // namespace
 
@@ -293,8 +290,9 @@ void NeighbourReach::neighbours(const KnnIndex& index, std::uint32_t i,
               index.neighbours_within(i, reach * (1 + kRadiusMargin), k_, out, true)))
             index.neighbours_of(i, k_, out);
     }
-    remember_reach(pass_, out);
-    radius_[i] = rounded_up(last_reach.radius);
+    const double kth = farthest_of(out);
+    last_reach = {pass_, kth};
+    radius_[i] = rounded_up(kth);
 }
 
 void NeighbourReach::moved(const std::vector<Vec3>& before, const std::vector<double>& shift,

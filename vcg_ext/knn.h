@@ -85,10 +85,9 @@ public:
     void begin_round(std::size_t points, int k);
     /// The round's k nearest others of point i of `index`'s points (KnnIndex::neighbours_of's
     /// set) in the order of the kd-tree's walk from the point: by the kept radius where there is
-    /// one, else by the k-th distance of the last point this thread served in the round,
-    /// widened (knn.cpp), else by
-    /// the radius vcglib's query finds (neighbours_of's own order where the k-th is tied). The
-    /// k-th distance is kept for the next round. Thread-safe for distinct i.
+    /// one, else by the k-th distance of the last point this thread served in the round, widened
+    /// (knn.cpp), else by the radius vcglib's query finds (neighbours_of's own order where the
+    /// k-th is tied). The k-th distance is kept for the next round. Thread-safe for distinct i.
     void neighbours(const KnnIndex& index, std::uint32_t i, std::vector<Neighbour>& out);
     /// The points moved from `before`, point i by at most |shift[i]| (the next rounds read a
     /// kd-tree of the new positions): a radius grows by its own point's shift and the largest
