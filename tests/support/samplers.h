@@ -17,10 +17,15 @@ namespace hrsr::testing {
 enum class Density { Uniform, Graded };
 
 namespace detail {
+/// The graded density's acceptance probability at p: 1 at x = −extent down to 0.1 at +extent.
+inline double acceptance(const Vec3& p, double extent) {
+    const double u = std::clamp((p[0] / extent + 1.0) / 2.0, 0.0, 1.0);
+    return 1.0 - 0.9 * u;
+}
+
 inline bool accept(const Vec3& p, double extent, Density density, std::mt19937_64& rng) {
     if (density == Density::Uniform) return true;
-    const double u = std::clamp((p[0] / extent + 1.0) / 2.0, 0.0, 1.0);
-    return std::uniform_real_distribution<double>(0, 1)(rng) < 1.0 - 0.9 * u;
+    return std::uniform_real_distribution<double>(0, 1)(rng) < acceptance(p, extent);
 }
 } // namespace detail
 
@@ -72,7 +77,10 @@ inline PointSet sample_torus(std::size_t n, double R = 1.0, double r = 0.35,
 /// points): the holes are far apart compared with the spacing. Points: random points on both tori,
 /// projected on f = 0 by Newton steps along ∇f, then thinned by a minimum distance
 /// (Poisson-disk-like, through a grid) so that the density is even, the distance chosen so that n
-/// points (±2 %) remain before the `density` grading. Normals: ∇f normalised (outward).
+/// points (±2 %) are expected after the `density` grading: the thinning counts each kept point by
+/// its acceptance probability, so a graded cloud thins to about n / 0.55 points before the
+/// grading keeps about n of them (a uniform cloud's count is unchanged: every weight is 1).
+/// Normals: ∇f normalised (outward).
 /// `holes` tori in a row along x (centres 2 · offset apart) make a surface of genus `holes`; the
 /// double torus is holes = 2 (the same points for the same seed).
 inline PointSet sample_multi_torus(std::size_t n, int holes, Density density = Density::Uniform,
@@ -107,9 +115,11 @@ inline PointSet sample_multi_torus(std::size_t n, int holes, Density density = D
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> angle(0, 2 * M_PI), unit(0, 1);
 
-    // Candidates: six times as many as wanted, projected on the surface.
+    // Candidates: six times as many as wanted before the grading (a graded cloud keeps about
+    // 0.55 of them, so it draws twice as many), projected on the surface.
+    const std::size_t wanted_candidates = (density == Density::Graded ? 12 : 6) * n;
     std::vector<Vec3> candidates, normals;
-    while (candidates.size() < 6 * n) {
+    while (candidates.size() < wanted_candidates) {
         const double u = angle(rng), v = angle(rng);
         if (unit(rng) * (R + r) > R + r * std::cos(v)) continue;
         const double cx = field.centre(std::min(int(unit(rng) * holes), holes - 1));
@@ -152,20 +162,28 @@ inline PointSet sample_multi_torus(std::size_t n, int holes, Density density = D
             kept.push_back(c);
         }
     };
-    // The count scales roughly as 1/d²: correct the distance until about n points remain.
+    // The expected count after the grading scales roughly as 1/d²: correct the distance until
+    // about n points are expected.
+    const double extent = field.centre(holes - 1) + R + r;
+    const auto expected_count = [&](const std::vector<std::size_t>& kept) {
+        if (density == Density::Uniform) return double(kept.size());
+        double sum = 0;
+        for (std::size_t c : kept) sum += detail::acceptance(candidates[c], extent);
+        return sum;
+    };
     std::vector<std::size_t> kept;
     double d = 0.1;
     thin(d, kept);
-    for (int round = 0; round < 8 && std::abs(double(kept.size()) - double(n)) > 0.02 * double(n);
+    for (int round = 0; round < 8 && std::abs(expected_count(kept) - double(n)) > 0.02 * double(n);
          ++round) {
-        d *= std::sqrt(double(kept.size()) / double(n));
+        d *= std::sqrt(expected_count(kept) / double(n));
         thin(d, kept);
     }
 
     PointSet s;
     s.precision = CoordinatePrecision::Double;
     for (std::size_t c : kept) {
-        if (!detail::accept(candidates[c], field.centre(holes - 1) + R + r, density, rng)) continue;
+        if (!detail::accept(candidates[c], extent, density, rng)) continue;
         s.positions.push_back(candidates[c]);
         s.normals.push_back(normals[c]);
     }

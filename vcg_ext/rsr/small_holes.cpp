@@ -29,13 +29,19 @@ bool close_quad(Embedding& e, const std::vector<std::uint32_t>& q,
     auto diagonal_free = [&](std::uint32_t a, std::uint32_t c) {
         return a != c && !rs.adjacent(a, c) && !extra.count({std::min(a, c), std::max(a, c)});
     };
+    // D-52: a triangle winding against its corners' normals counts below any that does not.
+    auto signed_angle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        const Vec3 &pa = rs.position(a), &pb = rs.position(b), &pc = rs.position(c);
+        const Vec3 normals = rs.normal(a) + rs.normal(b) + rs.normal(c);
+        const double angle = smallest_angle(pa, pb, pc);
+        return ((pb - pa) ^ (pc - pa)).dot(normals) > 0 ? angle : -1.0 - angle;
+    };
     auto quality = [&](int k) {
         const std::uint32_t a = q[k], b = q[k + 1], c = q[k + 2], d = q[(k + 3) % 4];
-        return std::min(smallest_angle(rs.position(a), rs.position(b), rs.position(c)),
-                        smallest_angle(rs.position(a), rs.position(c), rs.position(d)));
+        return std::min(signed_angle(a, b, c), signed_angle(a, c, d));
     };
     int best = -1;
-    double best_angle = -1;
+    double best_angle = -4;
     for (int k = 0; k < 2; ++k) {
         if (!diagonal_free(q[k], q[k + 2])) continue;
         if (const double angle = quality(k); angle > best_angle) {

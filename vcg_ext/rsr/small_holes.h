@@ -13,7 +13,8 @@ struct SmallHoleStats {
 };
 
 /// D-23: after the ear phase, a face of 3 darts is recorded as a triangle, and a face of 4 darts
-/// is closed by two triangles on the diagonal with the larger smallest angle (inserted into the
+/// is closed by two triangles on the diagonal with the larger smallest angle among those whose
+/// triangles wind with their corners' normals (D-52), if any (inserted into the
 /// rotation when it lies inside the face there). Such faces are left by the 175° sliver
 /// rule of §5.5.2 and the side rules of the ears on nearly collinear points; a real hole in
 /// the data has more boundary points than that. Faces are visited in order of their first dart

@@ -1,0 +1,47 @@
+// D-23 and D-52: RsR's last faces of four darts closed by the diagonal whose two triangles wind
+// with their corners' normals, on a hand-built rotation.
+#include "knn.h"
+#include "rsr/embedding.h"
+#include "rsr/faces.h"
+#include "rsr/geometry_check.h"
+#include "rsr/small_holes.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace hrsr {
+namespace {
+
+// The quad A(0, 0) → B(0.05, 1) → C(3, 2) → D(0, 4), counter-clockwise seen from +z, is concave
+// (248° at B). The diagonal A–C makes the larger smallest angle (15° against 2.9°), but it runs
+// outside the quad: its triangle A, B, C winds clockwise, a fold. E hangs off C so that the outer
+// face has six darts and stays open.
+TEST(RsrSmallFaces, QuadIsClosedByTheDiagonalWhoseTrianglesFaceTheNormals) {
+    const std::vector<Vec3> positions{{0, 0, 0}, {0.05, 1, 0}, {3, 2, 0}, {0, 4, 0}, {6, 3, 0}};
+    const std::vector<Vec3> normals(positions.size(), Vec3(0, 0, 1));
+    enum : std::uint32_t { A, B, C, D, E };
+    rsr::RotationSystem rotation(positions, normals);
+    for (const auto& [u, v] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{
+             {A, B}, {B, C}, {C, D}, {D, A}, {C, E}})
+        rotation.insert_edge(u, v);
+    rsr::Faces faces(rotation);
+    faces.label_all();
+    const KnnIndex index(positions);
+    rsr::GeometryCheck geometry(index, positions, normals, rotation);
+    std::vector<rsr::LocalTriangle> triangles;
+    rsr::Embedding embedding{rotation, faces, geometry, triangles, nullptr};
+
+    const rsr::SmallHoleStats stats = rsr::close_small_holes(embedding);
+
+    EXPECT_EQ(stats.quads_split + stats.quads_recorded_only, 1u);
+    ASSERT_EQ(triangles.size(), 2u);
+    for (const rsr::LocalTriangle& t : triangles) {
+        const Vec3 &a = positions[t[0]], &b = positions[t[1]], &c = positions[t[2]];
+        EXPECT_GT(((b - a) ^ (c - a))[2], 0) << t[0] << " " << t[1] << " " << t[2];
+    }
+    EXPECT_TRUE(rotation.adjacent(B, D) || stats.quads_recorded_only == 1);
+}
+
+} // namespace
+} // namespace hrsr
