@@ -177,10 +177,12 @@ INSTANTIATE_TEST_SUITE_P(
         SurfaceCase{"Torus_Uniform_100k", Shape::Torus, 100000, Density::Uniform, 1},
         SurfaceCase{"DoubleTorus_Uniform_20k", Shape::DoubleTorus, 20000, Density::Uniform, 2},
         SurfaceCase{"DoubleTorus_Graded_40k", Shape::DoubleTorus, 40000, Density::Graded, 2},
-        // D-52: the graded 30k triple torus had a concave quad closed by D-23 across its outside,
-        // one of its triangles winding against its vertices' normals.
+        // At 5k one triangle D-23 closed at a junction wound against its vertices' normals until
+        // some session before 44 (docs/ALGORITHM.md, D-23).
         SurfaceCase{"TripleTorus_Uniform_5k", Shape::TripleTorus, 5000, Density::Uniform, 3},
         SurfaceCase{"TripleTorus_Uniform_10k", Shape::TripleTorus, 10000, Density::Uniform, 3},
+        // D-52: a concave quad closed by D-23 across its outside, one of its triangles winding
+        // against its vertices' normals.
         SurfaceCase{"TripleTorus_Graded_30k", Shape::TripleTorus, 30000, Density::Graded, 3}),
     case_name);
 

@@ -8,13 +8,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace hrsr {
 namespace {
 
 // The quad A(0, 0) → B(0.05, 1) → C(3, 2) → D(0, 4), counter-clockwise seen from +z, is concave
-// (248° at B). The diagonal A–C makes the larger smallest angle (15° against 2.9°), but it runs
+// (248° at B). The diagonal A–C makes the larger smallest angle (15° against 0.95°), but it runs
 // outside the quad: its triangle A, B, C winds clockwise, a fold. E hangs off C so that the outer
 // face has six darts and stays open.
 TEST(RsrSmallFaces, QuadIsClosedByTheDiagonalWhoseTrianglesFaceTheNormals) {
@@ -41,6 +42,32 @@ TEST(RsrSmallFaces, QuadIsClosedByTheDiagonalWhoseTrianglesFaceTheNormals) {
         EXPECT_GT(((b - a) ^ (c - a))[2], 0) << t[0] << " " << t[1] << " " << t[2];
     }
     EXPECT_TRUE(rotation.adjacent(B, D) || stats.quads_recorded_only == 1);
+}
+
+// A bow tie: A(0, 0) → B(1, 1.2) → C(1.1, 0) → D(0, 1), its sides A–B and C–D crossing. Each
+// diagonal folds one triangle; as among unfolded ones, the larger smallest angle wins: A–C
+// (0.738 rad against 0.679 for B–D).
+TEST(RsrSmallFaces, WhereBothDiagonalsFoldTheLargerSmallestAngleWins) {
+    const std::vector<Vec3> positions{{0, 0, 0}, {1, 1.2, 0}, {1.1, 0, 0}, {0, 1, 0}, {3, -1, 0}};
+    const std::vector<Vec3> normals(positions.size(), Vec3(0, 0, 1));
+    enum : std::uint32_t { A, B, C, D, E };
+    rsr::RotationSystem rotation(positions, normals);
+    for (const auto& [u, v] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{
+             {A, B}, {B, C}, {C, D}, {D, A}, {C, E}})
+        rotation.insert_edge(u, v);
+    rsr::Faces faces(rotation);
+    faces.label_all();
+    const KnnIndex index(positions);
+    rsr::GeometryCheck geometry(index, positions, normals, rotation);
+    std::vector<rsr::LocalTriangle> triangles;
+    rsr::Embedding embedding{rotation, faces, geometry, triangles, nullptr};
+
+    rsr::close_small_holes(embedding);
+
+    ASSERT_EQ(triangles.size(), 2u);
+    for (const rsr::LocalTriangle& t : triangles)
+        EXPECT_TRUE(std::count(t.begin(), t.end(), A) && std::count(t.begin(), t.end(), C))
+            << t[0] << " " << t[1] << " " << t[2];
 }
 
 } // namespace

@@ -29,12 +29,13 @@ bool close_quad(Embedding& e, const std::vector<std::uint32_t>& q,
     auto diagonal_free = [&](std::uint32_t a, std::uint32_t c) {
         return a != c && !rs.adjacent(a, c) && !extra.count({std::min(a, c), std::max(a, c)});
     };
-    // D-52: a triangle winding against its corners' normals counts below any that does not.
+    // D-52: a triangle winding against its corners' normals counts below any that does not;
+    // among such triangles, as among the others, the larger smallest angle counts higher.
     auto signed_angle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         const Vec3 &pa = rs.position(a), &pb = rs.position(b), &pc = rs.position(c);
         const Vec3 normals = rs.normal(a) + rs.normal(b) + rs.normal(c);
         const double angle = smallest_angle(pa, pb, pc);
-        return ((pb - pa) ^ (pc - pa)).dot(normals) > 0 ? angle : -1.0 - angle;
+        return ((pb - pa) ^ (pc - pa)).dot(normals) > 0 ? angle : angle - 2.0; // angle ≤ π/3
     };
     auto quality = [&](int k) {
         const std::uint32_t a = q[k], b = q[k + 1], c = q[k + 2], d = q[(k + 3) % 4];
