@@ -40,16 +40,6 @@ void write_samples(const std::string& in, std::size_t n, const std::string& out,
     hrsr::io::write_ply(out, s.positions, s.normals, {}, hrsr::CoordinatePrecision::Float);
 }
 
-hrsr::PointSet surface_points(const std::string& shape, std::size_t n,
-                              hrsr::testing::Density density) {
-    namespace t = hrsr::testing;
-    if (shape == "sphere") return t::sample_sphere(n, 1.0, hrsr::Vec3(0, 0, 0), density);
-    if (shape == "torus") return t::sample_torus(n, 1.0, 0.35, density);
-    if (shape == "double_torus") return t::sample_multi_torus(n, 2, density);
-    if (shape == "triple_torus") return t::sample_multi_torus(n, 3, density);
-    throw hrsr::InvalidInput("unknown shape '" + shape + "'");
-}
-
 void write_surface(const std::vector<std::string>& a) {
     char* end = nullptr;
     const unsigned long long n = std::strtoull(a[2].c_str(), &end, 10);
@@ -58,9 +48,9 @@ void write_surface(const std::vector<std::string>& a) {
     const double noise_percent = std::stod(a[4]);
     if (!(noise_percent >= 0)) throw hrsr::InvalidInput("bad noise " + a[4]);
     if (a[5] != "normals" && a[5] != "none") throw hrsr::InvalidInput("bad normals " + a[5]);
-    hrsr::PointSet s = surface_points(a[1], std::size_t(n),
-                                      a[3] == "graded" ? hrsr::testing::Density::Graded
-                                                       : hrsr::testing::Density::Uniform);
+    hrsr::PointSet s = hrsr::testing::sample_surface(
+        a[1], std::size_t(n),
+        a[3] == "graded" ? hrsr::testing::Density::Graded : hrsr::testing::Density::Uniform);
     hrsr::testing::add_noise(s, noise_percent / 100.0 * hrsr::testing::bounding_box_diagonal(s));
     if (a[5] == "none") s.normals.clear();
     hrsr::io::write_ply(a[6], s.positions, s.normals, {}, hrsr::CoordinatePrecision::Double);

@@ -12,17 +12,11 @@ namespace {
 
 using testing::Density;
 
-PointSet sampled(const std::string& shape, std::size_t n, Density density) {
-    if (shape == "sphere") return testing::sample_sphere(n, 1.0, Vec3(0, 0, 0), density);
-    if (shape == "torus") return testing::sample_torus(n, 1.0, 0.35, density);
-    return testing::sample_multi_torus(n, shape == "double_torus" ? 2 : 3, density);
-}
-
 TEST(Samplers, EveryShapeHoldsAboutTheCountAskedForUniformOrGraded) {
     for (const char* shape : {"sphere", "torus", "double_torus", "triple_torus"})
         for (Density density : {Density::Uniform, Density::Graded})
             for (std::size_t n : {5000u, 20000u}) {
-                const PointSet s = sampled(shape, n, density);
+                const PointSet s = testing::sample_surface(shape, n, density);
                 SCOPED_TRACE(std::string(shape) + (density == Density::Graded ? " graded " : " ") +
                              std::to_string(n));
                 ASSERT_EQ(s.positions.size(), s.normals.size());

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -174,9 +176,10 @@ inline PointSet sample_multi_torus(std::size_t n, int holes, Density density = D
     std::vector<std::size_t> kept;
     double d = 0.1;
     thin(d, kept);
-    for (int round = 0; round < 8 && std::abs(expected_count(kept) - double(n)) > 0.02 * double(n);
-         ++round) {
-        d *= std::sqrt(expected_count(kept) / double(n));
+    for (int round = 0; round < 8; ++round) {
+        const double expected = expected_count(kept);
+        if (std::abs(expected - double(n)) <= 0.02 * double(n)) break;
+        d *= std::sqrt(expected / double(n));
         thin(d, kept);
     }
 
@@ -194,6 +197,16 @@ inline PointSet sample_multi_torus(std::size_t n, int holes, Density density = D
 inline PointSet sample_double_torus(std::size_t n, Density density = Density::Uniform,
                                     unsigned seed = 4) {
     return sample_multi_torus(n, 2, density, seed);
+}
+
+/// n points of the grid's surface `shape` ("sphere", "torus", "double_torus", "triple_torus") with
+/// the sizes the tests and bench/topology.sh use; std::invalid_argument for another name.
+inline PointSet sample_surface(const std::string& shape, std::size_t n, Density density) {
+    if (shape == "sphere") return sample_sphere(n, 1.0, Vec3(0, 0, 0), density);
+    if (shape == "torus") return sample_torus(n, 1.0, 0.35, density);
+    if (shape == "double_torus") return sample_multi_torus(n, 2, density);
+    if (shape == "triple_torus") return sample_multi_torus(n, 3, density);
+    throw std::invalid_argument("unknown shape '" + shape + "'");
 }
 
 /// Moves every point by isotropic Gaussian noise of standard deviation `sigma` (model units);
