@@ -96,6 +96,7 @@ nlohmann::json fold_repair_json(const ReconstructionReport& r) {
             {"faces_cut", r.fold_removal.faces_cut},
             {"vertex_copies", r.fold_removal.vertex_copies},
             {"points_in_no_triangle_placed", r.fold_removal.points_placed},
+            {"points_joined_border", r.fold_removal.points_joined_border},
             {"small_holes_closed", r.fold_removal.small_holes_closed},
             {"slits_closed", r.fold_removal.slits_closed},
             {"intersecting_pairs_left", r.fold_removal.pairs_after}};

@@ -296,6 +296,7 @@ std::size_t coarse_pinhole_edges(const std::vector<std::size_t>& handle_hop_limi
 // RsR's mesh of the coarse cloud, its non-manifold vertices split (§5.8), as the re-expansion
 // takes it.
 CoarseMesh coarse_mesh_of(const PreparedCloud& coarse, std::vector<Triangle> triangles,
+                          const std::vector<Vec3>& geometry, int candidate_rank,
                           const Execution& exec, ReconstructionReport& report) {
     CompactMesh<CoarseIndex> m = compact<CoarseIndex>(coarse.size(), std::move(triangles), exec);
     report.vertex_copies = m.copies;
@@ -307,12 +308,13 @@ CoarseMesh coarse_mesh_of(const PreparedCloud& coarse, std::vector<Triangle> tri
     coarse_mesh.triangles = std::move(m.triangles);
     // D-39: a coarse piece closed but for short loops (coarse_pinhole_edges) is a closed surface
     // whose coarse sampling left pinholes, which the re-expansion would widen into slits D-28
-    // cannot close. Pieces with a longer border (open scans) keep their loops: D-30 and D-28 decide
-    // about those on the fine mesh.
-    report.coarse_small_holes_filled =
-        fill_small_holes(coarse_mesh.triangles, coarse_mesh.positions, {},
-                         coarse_pinhole_edges(report.handle_hop_limits),
-                         SmallHoleScope::PiecesClosedButForThem, exec);
+    // cannot close. D-53: so is one closed but for loops up to twice as long whose fills lie over
+    // input points. Pieces with a longer border (open scans) keep their loops: D-30 and D-28
+    // decide about those on the fine mesh.
+    const std::size_t pinhole = coarse_pinhole_edges(report.handle_hop_limits);
+    report.coarse_small_holes_filled = fill_small_holes(
+        coarse_mesh.triangles, coarse_mesh.positions, {}, pinhole,
+        SmallHoleScope::PiecesClosedButForThem, exec, {2 * pinhole, &geometry, candidate_rank});
     return coarse_mesh;
 }
 
@@ -520,7 +522,8 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
     rsr::CloudMesh rsr_mesh = rsr::reconstruct_cloud(coarse, options.rsr, exec, observer);
     take_rsr_stats(rsr_mesh, report);
 
-    CoarseMesh coarse_mesh = coarse_mesh_of(coarse, std::move(rsr_mesh.triangles), exec, report);
+    CoarseMesh coarse_mesh = coarse_mesh_of(coarse, std::move(rsr_mesh.triangles), geometry,
+                                            rsr::candidate_rank(pre.k, cloud.size()), exec, report);
     coarse = PreparedCloud();
     report.l_min = options.l_min_percent > 0
                        ? options.l_min_percent / 100.0 * report.preprocess.bbox_diagonal

@@ -26,8 +26,11 @@ struct FoldRemovalStats {
     std::size_t faces_cut = 0;           ///< faces taken out without a fill (the last resort)
     std::size_t vertex_copies = 0;       ///< made where a cut pinched a vertex (§5.8)
     std::size_t points_placed = 0;       ///< points in no triangle put into a face (D-37)
-    std::size_t small_holes_closed = 0;  ///< loops of ≤ 5 edges that D-28 left, closed (D-38)
-    std::size_t slits_closed = 0;        ///< border loops narrower than 1.5 spacings, closed (D-48)
+    /// Of the vertices put back and points placed, those that joined a border edge: the border
+    /// runs through them, one edge more each (D-41).
+    std::size_t points_joined_border = 0;
+    std::size_t small_holes_closed = 0; ///< loops of ≤ 5 edges that D-28 left, closed (D-38)
+    std::size_t slits_closed = 0;       ///< border loops narrower than 1.5 spacings, closed (D-48)
 };
 
 /// D-36 (mesh/flat_faces.h): faces with collinear corners in the coordinates as written.

@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <tuple>
 #include <vector>
 
 namespace hrsr {
@@ -206,6 +208,115 @@ TEST(FillSmallHoles, TheScopeClosesOnlyPiecesClosedButForShortLoops) {
 
     EXPECT_EQ(fill_small_holes(t, v), 3u);
     EXPECT_EQ(measure_mesh(v.size(), t).boundary_edges, 7u);
+}
+
+/// The surface of the cube [0, n]³, each face an n × n grid of unit squares cut into two
+/// triangles along the same diagonal, wound outwards; vertices shared along the cube's edges.
+void grid_cube(int n, std::vector<Vec3>& v, std::vector<Triangle>& t) {
+    std::map<std::tuple<int, int, int>, std::uint32_t> index;
+    auto vertex = [&](int x, int y, int z) {
+        const auto [it, added] = index.emplace(std::make_tuple(x, y, z), std::uint32_t(v.size()));
+        if (added) v.emplace_back(x, y, z);
+        return it->second;
+    };
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side <= n; side += n)
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; j < n; ++j) {
+                    std::uint32_t q[4];
+                    const int di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
+                    for (int c = 0; c < 4; ++c) {
+                        int p[3];
+                        p[axis] = side;
+                        p[(axis + 1) % 3] = i + di[c];
+                        p[(axis + 2) % 3] = j + dj[c];
+                        q[c] = vertex(p[0], p[1], p[2]);
+                    }
+                    // (axis+1, axis+2) is counter-clockwise seen from +axis.
+                    if (side == n) {
+                        t.push_back({q[0], q[1], q[2]});
+                        t.push_back({q[0], q[2], q[3]});
+                    } else {
+                        t.push_back({q[0], q[2], q[1]});
+                        t.push_back({q[0], q[3], q[2]});
+                    }
+                }
+}
+
+/// Points on a grid of spacing 1/`per_unit` over the surface of the cube [0, n]³, those strictly
+/// inside the box (lo, hi) left out.
+std::vector<Vec3> cube_samples(int n, int per_unit, const Vec3& lo, const Vec3& hi) {
+    std::vector<Vec3> out;
+    const int m = n * per_unit;
+    for (int x = 0; x <= m; ++x)
+        for (int y = 0; y <= m; ++y)
+            for (int z = 0; z <= m; ++z) {
+                if (x != 0 && x != m && y != 0 && y != m && z != 0 && z != m) continue;
+                const Vec3 p(double(x) / per_unit, double(y) / per_unit, double(z) / per_unit);
+                const bool inside = p[0] > lo[0] && p[0] < hi[0] && p[1] > lo[1] && p[1] < hi[1] &&
+                                    p[2] > lo[2] && p[2] < hi[2];
+                if (!inside) out.push_back(p);
+            }
+    return out;
+}
+
+// D-53: a loop longer than the scope's pinholes counts as one when it lies over sampled surface.
+// A cube of side 4 (grids of unit squares) without the stars of two neighbouring vertices of its
+// top face (an 8-edge loop) and without one triangle of its bottom face, sampled on a grid four
+// times finer: closed but for these two loops, so both are filled, however long the longer
+// loops may be. With no sample inside the 8-edge hole (a hole in the data) the piece is open and
+// keeps both; so it does when the longer loops may have 7 edges at most.
+TEST(FillSmallHoles, ALongerLoopOverSampledSurfaceIsAPinholeToo) {
+    std::vector<Vec3> v;
+    std::vector<Triangle> t;
+    grid_cube(4, v, t);
+    const std::uint32_t a = vertex_at(v, Vec3(1, 2, 4)), b = vertex_at(v, Vec3(2, 2, 4));
+    ASSERT_LT(std::max(a, b), v.size());
+    t = without_star(without_star(t, a), b);
+    const auto bottom = std::find_if(t.begin(), t.end(), [&](const Triangle& f) {
+        return v[f[0]][2] == 0 && v[f[1]][2] == 0 && v[f[2]][2] == 0;
+    });
+    ASSERT_NE(bottom, t.end());
+    t.erase(bottom);
+    ASSERT_EQ(measure_mesh(v.size(), t).boundary_edges, 8u + 3u);
+    const int rank = 4;
+
+    const std::vector<Vec3> everywhere = cube_samples(4, 4, Vec3(9, 9, 9), Vec3(9, 9, 9));
+    for (std::size_t longest : {std::size_t(8), std::size_t(20)}) {
+        std::vector<Triangle> sampled = t;
+        EXPECT_EQ(fill_small_holes(sampled, v, {}, kMaxFilledLoop,
+                                   SmallHoleScope::PiecesClosedButForThem, {1, nullptr},
+                                   {longest, &everywhere, rank}),
+                  2u);
+        expect_closed_sphere(v, sampled);
+        EXPECT_TRUE(self_intersecting_pairs(v, sampled, {}).empty());
+    }
+    // The 8-edge loop lies in the box (0, 1)–(3, 3) of the top face (z = 4).
+    const std::vector<Vec3> around_a_hole = cube_samples(4, 4, Vec3(0, 1, 3.5), Vec3(3, 3, 4.5));
+    std::vector<Triangle> kept = t;
+    EXPECT_EQ(fill_small_holes(kept, v, {}, kMaxFilledLoop, SmallHoleScope::PiecesClosedButForThem,
+                               {1, nullptr}, {20, &around_a_hole, rank}),
+              0u);
+    EXPECT_EQ(fill_small_holes(kept, v, {}, kMaxFilledLoop, SmallHoleScope::PiecesClosedButForThem,
+                               {1, nullptr}, {7, &everywhere, rank}),
+              0u);
+    EXPECT_EQ(kept, t);
+
+    // The same hole on the face x = 0 too, both sampled but for the top one: the piece has a
+    // border that is no pinhole, so neither long loop is filled (nor the triangle hole).
+    const std::uint32_t c = vertex_at(v, Vec3(0, 1, 2)), d = vertex_at(v, Vec3(0, 2, 2));
+    ASSERT_LT(std::max(c, d), v.size());
+    std::vector<Triangle> two = without_star(without_star(t, c), d);
+    const std::vector<Triangle> before = two;
+    EXPECT_EQ(fill_small_holes(two, v, {}, kMaxFilledLoop, SmallHoleScope::PiecesClosedButForThem,
+                               {1, nullptr}, {20, &around_a_hole, rank}),
+              0u);
+    EXPECT_EQ(two, before);
+    // Sampled everywhere, both long loops and the triangle hole are filled.
+    EXPECT_EQ(fill_small_holes(two, v, {}, kMaxFilledLoop, SmallHoleScope::PiecesClosedButForThem,
+                               {1, nullptr}, {20, &everywhere, rank}),
+              3u);
+    expect_closed_sphere(v, two);
 }
 
 // Thousands of pieces (vertices and triangles over several blocks of the parallel loops), their

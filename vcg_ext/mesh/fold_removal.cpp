@@ -41,6 +41,7 @@ void Remover::run(FoldRemovalStats& stats) {
     close_slits(stats);
     stats.vertices_reinserted = reinserted_;
     stats.points_placed = placed_;
+    stats.points_joined_border = joined_border_;
     stats.vertices_removed -= reinserted_;
     stats.pairs_after = std::size_t(std::count_if(
         pairs_.begin(), pairs_.end(), [&](auto p) { return alive_[p.first] && alive_[p.second]; }));

@@ -250,9 +250,9 @@ private:
     bool close_small_hole(Hole hole, std::size_t limit);
 
     // Where an undo goes back to (the faces retired since are in retired_log_): the faces there
-    // were, and the count of vertices put back.
+    // were, the count of vertices put back and of those that joined the border.
     struct Undo {
-        std::size_t faces, reinserted;
+        std::size_t faces, reinserted, joined_border;
     };
     Undo begin_undo();
 
@@ -484,6 +484,7 @@ private:
     Box gathered_box_{};                     ///< of the last gather_standing()
     std::size_t reinserted_ = 0;             ///< removed vertices put back (reinsert)
     std::size_t placed_ = 0;                 ///< vertices without a face given, placed (D-37)
+    std::size_t joined_border_ = 0;          ///< put back across a border edge (D-41)
     std::vector<Triangle> inner_cuts_;       ///< faces cut with no edge on the border
     std::vector<std::uint32_t> cut_corners_; ///< the corners of every face cut
     std::optional<std::vector<std::uint32_t>> retired_log_; ///< while a D-38 closing may be undone

@@ -137,6 +137,7 @@ bool Remover::close_loop(const Hole& hole, std::size_t limit, FoldRemovalStats& 
         stats.vertices_removed += lost;
     } else {
         rewind(undo);
+        joined_border_ = undo.joined_border;
     }
     retired_log_.reset();
     // Every vertex it took out is back (or lost, counted as removed): none counts as put back.
@@ -253,7 +254,7 @@ bool Remover::close_small_hole(Hole hole, std::size_t limit) {
 
 Remover::Undo Remover::begin_undo() {
     retired_log_.emplace();
-    return {triangles_.size(), reinserted_};
+    return {triangles_.size(), reinserted_, joined_border_};
 }
 
 bool Remover::put_back_taken_out() {

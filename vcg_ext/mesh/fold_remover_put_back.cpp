@@ -220,6 +220,7 @@ bool Remover::put_back(std::uint32_t v) {
         if (!fits) continue;
         for (std::uint32_t f : split.faces) retire(f);
         for (const Triangle& t : split.triangles) add(t);
+        if (lengthens) ++joined_border_;
         return true;
     }
     return false;

@@ -2,10 +2,13 @@
 
 #include "geometry.h"
 #include "graph/neighbour_graph.h"
+#include "knn.h"
 #include "mesh/triangle_grid.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <unordered_map>
 
 namespace hrsr {
@@ -129,9 +132,11 @@ bool on_short_loop(const std::vector<std::uint32_t>& next, std::uint32_t v, std:
 // Per vertex: its piece (the vertices its triangles join) is not a closed surface with pinholes:
 // it has a border that is not a short loop (a longer loop, or a vertex on several hole edges),
 // or at least as many border vertices as interior ones (a scrap of a few points).
+// `on_long_loop`: vertices on loops that count as short too (D-53), or empty.
 std::vector<std::uint8_t> on_open_piece(const std::vector<Triangle>& triangles,
                                         const std::vector<std::uint32_t>& next,
-                                        std::size_t max_edges) {
+                                        std::size_t max_edges,
+                                        const std::vector<std::uint8_t>& on_long_loop) {
     const std::size_t n = next.size();
     DisjointSets pieces(n);
     std::vector<std::uint8_t> used(n, 0);
@@ -146,7 +151,9 @@ std::vector<std::uint8_t> on_open_piece(const std::vector<Triangle>& triangles,
         if (!used[v]) continue;
         const std::uint32_t root = pieces.find(v);
         interior_minus_border[root] += next[v] == kNone ? 1 : -1;
-        if (next[v] != kNone && !on_short_loop(next, v, max_edges)) open_root[root] = 1;
+        if (next[v] != kNone && !on_short_loop(next, v, max_edges) &&
+            (on_long_loop.empty() || !on_long_loop[v]))
+            open_root[root] = 1;
     }
     std::vector<std::uint8_t> open(n, 0);
     for (std::uint32_t v = 0; v < n; ++v) {
@@ -190,6 +197,15 @@ struct Fill {
     int chosen = -1;                         ///< the first candidate that does not
     Box box;
 };
+
+Fill fill_of(const std::vector<std::uint32_t>& loop, const DirectedEdges& edges,
+             const VertexPositions& positions) {
+    Fill f;
+    f.fans = candidate_fans(loop, edges, positions);
+    f.box = {positions[loop[0]], positions[loop[0]]};
+    for (std::uint32_t x : loop) f.box.add(positions[x]);
+    return f;
+}
 
 /// Files fills in a hash grid of cells as large as the largest fill, so that one pass over the
 /// mesh tests each triangle against the fills it may touch only.
@@ -322,11 +338,75 @@ void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangle
     }
 }
 
+// D-53: the loops longer than `max_edges` and no longer than sampled.max_edges on pieces that
+// would be closed but for short loops and these, each with its fans over sampled surface (loops
+// without one are left out); `on_long_loop` marks their vertices.
+struct LongLoops {
+    std::vector<Fill> fills;
+    std::vector<std::uint32_t> smallest_vertex; ///< per fill: where the loop is met first
+    std::vector<std::uint8_t> on_long_loop;
+};
+
+// The loop's fans every triangle of which has a sample within `reach` of its centroid, where
+// reach is the distance from a corner of the loop to its rank-th nearest sample, at the corner
+// where that is shortest (RsR's candidate edges reach that far, §5.1). None when rank < 1.
+std::vector<std::vector<Triangle>> fans_over_samples(std::vector<std::vector<Triangle>> fans,
+                                                     const std::vector<std::uint32_t>& loop,
+                                                     const VertexPositions& positions,
+                                                     const KnnIndex& samples, int rank) {
+    if (rank < 1) return {};
+    std::vector<Neighbour> found;
+    double reach = std::numeric_limits<double>::infinity();
+    for (std::uint32_t x : loop) {
+        samples.nearest(positions[x], rank, found);
+        if (!found.empty()) reach = std::min(reach, found.back().squared_distance);
+    }
+    std::vector<std::vector<Triangle>> out;
+    for (std::vector<Triangle>& fan : fans) {
+        const bool sampled = std::all_of(fan.begin(), fan.end(), [&](const Triangle& t) {
+            samples.nearest((positions[t[0]] + positions[t[1]] + positions[t[2]]) / 3.0, 1, found);
+            return !found.empty() && found.front().squared_distance <= reach;
+        });
+        if (sampled) out.push_back(std::move(fan));
+    }
+    return out;
+}
+
+LongLoops sampled_long_loops(const std::vector<Triangle>& triangles, const DirectedEdges& edges,
+                             const std::vector<std::uint32_t>& next,
+                             const VertexPositions& positions, std::size_t max_edges,
+                             const SampledLoops& sampled, const Execution& exec) {
+    LongLoops out;
+    out.on_long_loop.assign(next.size(), 0);
+    std::vector<std::vector<std::uint32_t>> loops;
+    std::vector<std::uint32_t> loop;
+    for (std::uint32_t v = 0; v < next.size(); ++v)
+        if (next[v] != kNone && short_loop(next, v, sampled.max_edges, loop) &&
+            loop.size() > max_edges)
+            loops.push_back(loop);
+    if (loops.empty()) return out; // the usual case: no pass over the pieces, no kd-tree
+    const std::vector<std::uint8_t> open = on_open_piece(triangles, next, sampled.max_edges, {});
+    std::unique_ptr<KnnIndex> samples; // built once a loop asks for it
+    for (const std::vector<std::uint32_t>& candidate : loops) {
+        if (open[candidate.front()]) continue;
+        Fill f = fill_of(candidate, edges, positions);
+        if (f.fans.empty()) continue;
+        if (!samples) samples = std::make_unique<KnnIndex>(*sampled.samples, exec);
+        f.fans = fans_over_samples(std::move(f.fans), candidate, positions, *samples, sampled.rank);
+        if (f.fans.empty()) continue;
+        for (std::uint32_t x : candidate) out.on_long_loop[x] = 1;
+        out.fills.push_back(std::move(f));
+        out.smallest_vertex.push_back(candidate.front());
+    }
+    return out;
+}
+
 } // namespace
 
 std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
                              const IndexVector<VertexIndex, PointIndex>& vertex_point,
-                             std::size_t max_edges, SmallHoleScope scope, const Execution& exec) {
+                             std::size_t max_edges, SmallHoleScope scope, const Execution& exec,
+                             const SampledLoops& sampled) {
     // No progress from these loops: the phase's fraction is not theirs to report.
     const Execution quiet = without_progress(exec);
     const VertexPositions positions{points, vertex_point,
@@ -336,19 +416,30 @@ std::size_t fill_small_holes(std::vector<Triangle>& triangles, const std::vector
         const DirectedEdges edges(triangles, positions.vertex_count, quiet);
         const std::vector<std::uint32_t> next =
             hole_successors(edges, positions.vertex_count, quiet);
-        const std::vector<std::uint8_t> open = scope == SmallHoleScope::PiecesClosedButForThem
-                                                   ? on_open_piece(triangles, next, max_edges)
-                                                   : std::vector<std::uint8_t>(next.size(), 0);
+        const bool closed_pieces = scope == SmallHoleScope::PiecesClosedButForThem;
+        LongLoops long_loops;
+        if (closed_pieces && sampled.samples && sampled.max_edges > max_edges)
+            long_loops =
+                sampled_long_loops(triangles, edges, next, positions, max_edges, sampled, quiet);
+        const std::vector<std::uint8_t> open =
+            closed_pieces ? on_open_piece(triangles, next, max_edges, long_loops.on_long_loop)
+                          : std::vector<std::uint8_t>(next.size(), 0);
         std::vector<std::uint32_t> loop;
+        std::size_t next_long = 0; // long_loops' fills are in order of their smallest vertex
         for (std::uint32_t v = 0; v < next.size(); ++v) {
-            if (next[v] == kNone || open[v] || !short_loop(next, v, max_edges, loop)) continue;
+            if (next[v] == kNone) continue;
+            if (!long_loops.on_long_loop.empty() && long_loops.on_long_loop[v]) {
+                if (next_long < long_loops.smallest_vertex.size() &&
+                    long_loops.smallest_vertex[next_long] == v) {
+                    if (!open[v]) fills.push_back(std::move(long_loops.fills[next_long]));
+                    ++next_long;
+                }
+                continue;
+            }
+            if (open[v] || !short_loop(next, v, max_edges, loop)) continue;
             if (loop.size() == 3 && edges.has_triangle(loop[0], loop[1], loop[2])) continue;
-            Fill f;
-            f.fans = candidate_fans(loop, edges, positions);
-            if (f.fans.empty()) continue;
-            f.box = {positions[loop[0]], positions[loop[0]]};
-            for (std::uint32_t x : loop) f.box.add(positions[x]);
-            fills.push_back(std::move(f));
+            Fill f = fill_of(loop, edges, positions);
+            if (!f.fans.empty()) fills.push_back(std::move(f));
         }
     }
     choose_fans(fills, triangles, positions, quiet);
