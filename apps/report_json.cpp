@@ -46,6 +46,7 @@ nlohmann::json to_json(const PreprocessReport& r) {
           {"fallback_reason", r.normals_fallback_reason},
           {"renormalised", r.normals_renormalised},
           {"opposed_to_nearest_neighbour", r.opposed_input_normals},
+          {"turned_against_their_neighbours", r.turned_input_normals},
           {"pca_neighbours", r.pca_neighbours},
           {"pca_degenerate_copied", r.pca_degenerate},
           {"orientation_flips", r.orientation_flips},

@@ -219,6 +219,16 @@ void restore_input_normals(const PointSet& input, const PreprocessReport& pre,
     }
 }
 
+// D-54: the normals turned for the algorithm (and the fold repair) are written as the input gave
+// them. `turned`: input indices, increasing.
+void write_turned_normals_as_given(const std::vector<InputIndex>& turned, Reconstruction& mesh) {
+    if (turned.empty()) return;
+    for (std::size_t v = 0; v < mesh.vertex_input_index.size(); ++v)
+        if (std::binary_search(turned.begin(), turned.end(),
+                               InputIndex(mesh.vertex_input_index[v])))
+            mesh.vertex_normals[v] = -mesh.vertex_normals[v];
+}
+
 // A phase boundary: progress, and the chance to cancel before the phase's work.
 void begin_phase(const Execution& exec, const std::string& phase) {
     if (exec.progress) exec.progress->begin(phase);
@@ -472,9 +482,11 @@ Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const E
     Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
     assembly.reset();
     const Normalisation normalisation = cloud.normalisation;
+    const std::vector<InputIndex> turned = cloud.turned_normals;
     repair_and_remove_folds(input, std::move(cloud), options.fold_repair_rounds, kMaxFilledLoop,
                             exec, mesh, report);
     clear_flat_output_faces(input, mesh, exec, report);
+    write_turned_normals_as_given(turned, mesh);
     restore_input_normals(input, report.preprocess, mesh);
     return {std::move(mesh), normalisation};
 }
@@ -567,9 +579,11 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
         std::max(kMaxFilledLoop,
                  rsr::handle_hop_limit(options.rsr.min_handle_loop, cloud.size(), cloud.size()));
     const Normalisation normalisation = cloud.normalisation;
+    const std::vector<InputIndex> turned = cloud.turned_normals;
     repair_and_remove_folds(input, std::move(cloud), options.rsr.fold_repair_rounds, pinhole_edges,
                             exec, mesh, report);
     clear_flat_output_faces(input, mesh, exec, report);
+    write_turned_normals_as_given(turned, mesh);
     return {std::move(mesh), normalisation};
 }
 

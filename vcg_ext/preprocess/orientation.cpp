@@ -1,6 +1,7 @@
 #include "preprocess/orientation.h"
 
 #include "graph/spanning_forest.h"
+#include "parallel.h"
 
 #include <cmath>
 
@@ -30,13 +31,45 @@ OrientationResult orient_normals(const CsrGraph& graph, const std::vector<Vec3>&
     return result;
 }
 
-std::size_t opposed_nearest_normals(const KnnIndex& index, const std::vector<Vec3>& normals,
-                                    const Execution& exec) {
-    const KnnTable nearest = knn_table(index, 1, exec);
-    std::size_t opposed = 0;
-    for (std::size_t i = 0; i < nearest.size(); ++i)
-        if (normals[i].dot(normals[nearest.row(i)[0]]) < 0) ++opposed;
-    return opposed;
+OpposedNormals opposed_normals(const KnnIndex& index, const std::vector<Vec3>& normals,
+                               const Execution& exec) {
+    const KnnTable nearest = knn_table(index, kOpposedScreen, exec);
+    OpposedNormals out;
+    for (std::size_t i = 0; i < nearest.size(); ++i) {
+        bool any = false;
+        for (int c = 0; c < nearest.k; ++c) {
+            const std::uint32_t j = nearest.row(i)[c];
+            const bool opposed = j != kNoNeighbour && normals[i].dot(normals[j]) < 0;
+            if (c == 0 && opposed) ++out.to_nearest;
+            any = any || opposed;
+        }
+        if (any) out.to_a_near_one.push_back(std::uint32_t(i));
+    }
+    return out;
+}
+
+std::vector<std::uint32_t> turn_lone_flipped_normals(const KnnIndex& index,
+                                                     std::vector<Vec3>& normals,
+                                                     const std::vector<std::uint32_t>& candidates,
+                                                     const Execution& exec) {
+    std::vector<std::uint8_t> lone(candidates.size(), 0);
+    parallel_for_blocks(exec, candidates.size(), kCheapBlock / 16,
+                        [&](std::size_t, std::size_t first, std::size_t end) {
+                            std::vector<Neighbour> near;
+                            for (std::size_t c = first; c < end; ++c) {
+                                const std::uint32_t i = candidates[c];
+                                index.neighbours_of(i, kLoneFlipNeighbours, near);
+                                int opposed = 0;
+                                for (const Neighbour& n : near)
+                                    opposed += normals[i].dot(normals[n.index]) < 0;
+                                lone[c] = opposed >= kLoneFlipOpposed;
+                            }
+                        });
+    std::vector<std::uint32_t> turned;
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+        if (lone[c]) turned.push_back(candidates[c]);
+    for (std::uint32_t i : turned) normals[i] = -normals[i];
+    return turned;
 }
 
 } // namespace hrsr

@@ -28,10 +28,32 @@ OrientationResult orient_normals(const CsrGraph& graph, const std::vector<Vec3>&
                                  const std::vector<double>& neighbourhood_radius,
                                  std::vector<Vec3>& normals);
 
-/// Input normals are trusted to be oriented (§4.1). Counts the points whose nearest neighbour's
-/// normal points the other way (n_i · n_j < 0): the mark of unoriented or partly flipped input
-/// normals, or of two sheets closer than the sampling spacing. `index` is built on the points.
-std::size_t opposed_nearest_normals(const KnnIndex& index, const std::vector<Vec3>& normals,
-                                    const Execution& exec);
+/// Points whose normal opposes a near neighbour's (n_i · n_j < 0).
+struct OpposedNormals {
+    /// Opposed to the nearest neighbour's: the mark of unoriented or partly flipped input
+    /// normals, or of two sheets closer than the sampling spacing (§4.1 trusts input normals).
+    std::size_t to_nearest = 0;
+    /// Opposed to one of the kOpposedScreen nearest (a flipped pair's points are each other's
+    /// nearest), in increasing order: D-54's candidates.
+    std::vector<std::uint32_t> to_a_near_one;
+};
+inline constexpr int kOpposedScreen = 3;
+
+/// The points whose normal opposes a near neighbour's. `index` is built on the points.
+OpposedNormals opposed_normals(const KnnIndex& index, const std::vector<Vec3>& normals,
+                               const Execution& exec);
+
+/// D-54: neighbours asked, and how many of them must face the other way, for a lone flip.
+inline constexpr int kLoneFlipNeighbours = 16;
+inline constexpr int kLoneFlipOpposed = 12;
+
+/// D-54: turns the input normals that face against their neighbourhood: of `candidates` (points
+/// opposed to a near neighbour), those with at least kLoneFlipOpposed of their
+/// kLoneFlipNeighbours nearest neighbours' normals opposed. Decided on the normals as given, then
+/// turned; returns the points turned, in increasing order. The same for any thread count.
+std::vector<std::uint32_t> turn_lone_flipped_normals(const KnnIndex& index,
+                                                     std::vector<Vec3>& normals,
+                                                     const std::vector<std::uint32_t>& candidates,
+                                                     const Execution& exec);
 
 } // namespace hrsr

@@ -82,16 +82,24 @@ std::vector<Vec3> smooth(const std::vector<Vec3>& positions, const std::vector<V
 
 // Input normals are used as given; half of them flipped gives two interleaved surfaces, one per
 // orientation (the normal filter keeps them apart). Not silent: warn and name the remedy.
-void check_input_orientation(const KnnIndex& index, const std::vector<Vec3>& normals,
-                             const Execution& exec, PreprocessReport& report) {
+// D-54: a lone normal facing against its whole neighbourhood is a scanner's slip, turned here
+// (and written as given); left, its point folds or stays out of the mesh.
+void check_input_orientation(const KnnIndex& index, PreparedCloud& cloud, const Execution& exec,
+                             PreprocessReport& report) {
     Phase phase(exec, report, "normal check");
-    report.opposed_input_normals = opposed_nearest_normals(index, normals, exec);
+    const OpposedNormals opposed = opposed_normals(index, cloud.normals, exec);
+    report.opposed_input_normals = opposed.to_nearest;
+    for (std::uint32_t p :
+         turn_lone_flipped_normals(index, cloud.normals, opposed.to_a_near_one, exec))
+        cloud.turned_normals.push_back(cloud.input_index[PointIndex(p)]);
+    std::sort(cloud.turned_normals.begin(), cloud.turned_normals.end());
+    report.turned_input_normals = cloud.turned_normals.size();
     if (double(report.opposed_input_normals) <=
-        constants::kOpposedNormalsWarningFraction * double(normals.size()))
+        constants::kOpposedNormalsWarningFraction * double(cloud.size()))
         return;
     report.input_normals_look_inconsistent = true;
     report.warnings.push_back(
-        std::to_string(report.opposed_input_normals) + " of " + std::to_string(normals.size()) +
+        std::to_string(report.opposed_input_normals) + " of " + std::to_string(cloud.size()) +
         " input normals point away from their nearest neighbour's: they look inconsistently "
         "oriented (re-estimate them), or two sheets are closer than the "
         "point spacing");
@@ -204,7 +212,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     if (purpose == PrepareFor::Collapse && !estimated && !extras.graph) {
         auto kept = std::make_unique<KnnIndex>(cloud.positions, exec);
         const KnnIndex& index = *kept;
-        check_input_orientation(index, cloud.normals, exec, report);
+        check_input_orientation(index, cloud, exec, report);
         if (tangent && noisy(cloud, index, exec, report)) {
             // D-33: noise moved the points along the surface too, away from where their input
             // normals were measured. Smoothed along those, a noisy cloud folds (1M triple torus
@@ -228,7 +236,7 @@ PreparedCloud prepare_points(const PointSet& input, const PreprocessOptions& opt
     if (estimated)
         cloud.normals = estimate(cloud.smoothed, *index, options, exec, report, reach);
     else
-        check_input_orientation(*index, cloud.normals, exec, report);
+        check_input_orientation(*index, cloud, exec, report);
     // The index is on the input positions until the first smoothing round (D-33).
     if (purpose == PrepareFor::Collapse && tangent) noisy(cloud, *index, exec, report);
     if (purpose == PrepareFor::Rsr && tangent && !estimated)
@@ -280,6 +288,7 @@ PreparedCloud keep_components(const PreparedCloud& cloud, const ComponentSplit& 
                               std::vector<Origin>& dropped) {
     PreparedCloud kept;
     kept.normalisation = cloud.normalisation;
+    kept.turned_normals = cloud.turned_normals;
     kept.component_count = split.count;
     for (std::size_t i = 0; i < cloud.size(); ++i) {
         const Origin from = (cloud.*origin)[Key(std::uint32_t(i))];

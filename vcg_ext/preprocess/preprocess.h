@@ -29,6 +29,9 @@ struct PreparedCloud {
     std::vector<Vec3> smoothed;  ///< normalised smoothed positions (= positions in Euclidean
                                  ///< mode); empty when prepared for the collapse
     std::vector<Vec3> normals;   ///< unit; consistently oriented per connected piece
+    /// D-54: the input points whose normal `normals` holds turned (increasing); outputs write
+    /// them as given.
+    std::vector<InputIndex> turned_normals;
     /// D-33, HRsR on a noisy cloud with input normals: the normals its collapse and re-expansion
     /// use with `smoothed` (averaged_normals()); empty = `normals`. Outputs keep `normals`.
     std::vector<Vec3> smoothed_normals;

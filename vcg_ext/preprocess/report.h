@@ -42,6 +42,9 @@ struct PreprocessReport {
         0; ///< input normals opposed to their nearest neighbour's (a warning above 10 %)
     /// That warning was given: each front end adds how to re-estimate normals in its own terms.
     bool input_normals_look_inconsistent = false;
+    /// D-54: input normals facing against most of their neighbours', turned for the algorithm
+    /// (the output keeps them as given).
+    std::size_t turned_input_normals = 0;
     std::size_t orientation_flips = 0; ///< estimated normals flipped by the MST propagation
     std::size_t orientation_components =
         0; ///< connected pieces oriented independently (one sign each)
