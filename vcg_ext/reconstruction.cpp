@@ -482,7 +482,7 @@ Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const E
     Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
     assembly.reset();
     const Normalisation normalisation = cloud.normalisation;
-    const std::vector<InputIndex> turned = cloud.turned_normals;
+    const std::vector<InputIndex> turned = std::move(cloud.turned_normals); // cloud goes next
     repair_and_remove_folds(input, std::move(cloud), options.fold_repair_rounds, kMaxFilledLoop,
                             exec, mesh, report);
     clear_flat_output_faces(input, mesh, exec, report);
@@ -579,7 +579,7 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
         std::max(kMaxFilledLoop,
                  rsr::handle_hop_limit(options.rsr.min_handle_loop, cloud.size(), cloud.size()));
     const Normalisation normalisation = cloud.normalisation;
-    const std::vector<InputIndex> turned = cloud.turned_normals;
+    const std::vector<InputIndex> turned = std::move(cloud.turned_normals); // cloud goes next
     repair_and_remove_folds(input, std::move(cloud), options.rsr.fold_repair_rounds, pinhole_edges,
                             exec, mesh, report);
     clear_flat_output_faces(input, mesh, exec, report);

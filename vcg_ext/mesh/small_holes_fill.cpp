@@ -344,7 +344,7 @@ void choose_fans(std::vector<Fill>& fills, const std::vector<Triangle>& triangle
 struct LongLoops {
     std::vector<Fill> fills;
     std::vector<std::uint32_t> smallest_vertex; ///< per fill: where the loop is met first
-    std::vector<std::uint8_t> on_long_loop;
+    std::vector<std::uint8_t> on_long_loop;     ///< empty: no such loop
 };
 
 // The loop's fans every triangle of which has a sample within `reach` of its centroid, where
@@ -377,7 +377,6 @@ LongLoops sampled_long_loops(const std::vector<Triangle>& triangles, const Direc
                              const VertexPositions& positions, std::size_t max_edges,
                              const SampledLoops& sampled, const Execution& exec) {
     LongLoops out;
-    out.on_long_loop.assign(next.size(), 0);
     std::vector<std::vector<std::uint32_t>> loops;
     std::vector<std::uint32_t> loop;
     for (std::uint32_t v = 0; v < next.size(); ++v)
@@ -385,6 +384,7 @@ LongLoops sampled_long_loops(const std::vector<Triangle>& triangles, const Direc
             loop.size() > max_edges)
             loops.push_back(loop);
     if (loops.empty()) return out; // the usual case: no pass over the pieces, no kd-tree
+    out.on_long_loop.assign(next.size(), 0);
     const std::vector<std::uint8_t> open = on_open_piece(triangles, next, sampled.max_edges, {});
     std::unique_ptr<KnnIndex> samples; // built once a loop asks for it
     for (const std::vector<std::uint32_t>& candidate : loops) {

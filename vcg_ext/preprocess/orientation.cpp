@@ -33,17 +33,28 @@ OrientationResult orient_normals(const CsrGraph& graph, const std::vector<Vec3>&
 
 OpposedNormals opposed_normals(const KnnIndex& index, const std::vector<Vec3>& normals,
                                const Execution& exec) {
-    const KnnTable nearest = knn_table(index, kOpposedScreen, exec);
+    // Per block, joined in block order (no table of every point's neighbours: only the few
+    // opposed points are kept).
+    std::vector<OpposedNormals> found(block_count(normals.size(), kCheapBlock));
+    parallel_for_blocks(exec, normals.size(), kCheapBlock,
+                        [&](std::size_t block, std::size_t first, std::size_t end) {
+                            std::vector<Neighbour> near;
+                            for (auto i = std::uint32_t(first); i < end; ++i) {
+                                index.neighbours_of(i, kOpposedScreen, near);
+                                bool any = false;
+                                for (std::size_t c = 0; c < near.size(); ++c) {
+                                    const bool opposed = normals[i].dot(normals[near[c].index]) < 0;
+                                    if (c == 0 && opposed) ++found[block].to_nearest;
+                                    any = any || opposed;
+                                }
+                                if (any) found[block].to_a_near_one.push_back(i);
+                            }
+                        });
     OpposedNormals out;
-    for (std::size_t i = 0; i < nearest.size(); ++i) {
-        bool any = false;
-        for (int c = 0; c < nearest.k; ++c) {
-            const std::uint32_t j = nearest.row(i)[c];
-            const bool opposed = j != kNoNeighbour && normals[i].dot(normals[j]) < 0;
-            if (c == 0 && opposed) ++out.to_nearest;
-            any = any || opposed;
-        }
-        if (any) out.to_a_near_one.push_back(std::uint32_t(i));
+    for (const OpposedNormals& f : found) {
+        out.to_nearest += f.to_nearest;
+        out.to_a_near_one.insert(out.to_a_near_one.end(), f.to_a_near_one.begin(),
+                                 f.to_a_near_one.end());
     }
     return out;
 }
