@@ -99,6 +99,8 @@ nlohmann::json fold_repair_json(const ReconstructionReport& r) {
             {"points_joined_border", r.fold_removal.points_joined_border},
             {"small_holes_closed", r.fold_removal.small_holes_closed},
             {"slits_closed", r.fold_removal.slits_closed},
+            {"pieces_absorbed", r.fold_removal.pieces_absorbed},
+            {"points_absorbed", r.fold_removal.points_absorbed},
             {"intersecting_pairs_left", r.fold_removal.pairs_after}};
 }
 
@@ -270,10 +272,10 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
         std::printf("  folds: %zu intersecting triangle pairs, %zu edge flips, %zu pairs left; "
                     "%zu vertices taken out (%zu holes filled again), %zu faces cut, %zu pairs "
                     "left; %zu points in no triangle placed into a face; %zu small holes "
-                    "and %zu slits closed\n",
+                    "and %zu slits closed; %zu small pieces joined the surface they lie on\n",
                     r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after,
                     f.vertices_removed, f.holes_refilled, f.faces_cut, f.pairs_after,
-                    f.points_placed, f.small_holes_closed, f.slits_closed);
+                    f.points_placed, f.small_holes_closed, f.slits_closed, f.pieces_absorbed);
     }
     if (r.flat_faces.found > 0)
         std::printf("  faces without area (corners on one line): %zu, %zu edges flipped, %zu taken "

@@ -37,6 +37,7 @@ void Remover::run(FoldRemovalStats& stats) {
     close_small_cut_holes(stats);
     close_small_holes_left(stats);
     put_back_the_rest();
+    absorb_small_pieces(stats);
     close_pinholes(stats);
     close_slits(stats);
     stats.vertices_reinserted = reinserted_;

@@ -40,7 +40,9 @@ struct FoldRemoval {
 /// and every vertex it takes out goes back at once, else they stay as they were (D-38). Last,
 /// the vertices taken out and those given without any face (D-37: points in no triangle) go into
 /// a standing face near them, or close a border corner next to them, where that fits; vertices
-/// still without a face are not in the result. Then (D-45) the loops of more than 5 edges of a
+/// still without a face are not in the result. Then (D-55) each piece of at most 200 faces but
+/// the largest whose points all go back over faces of other pieces near it, once its faces are
+/// gone, joins them so. Then (D-45) the loops of more than 5 edges of a
 /// piece whose every border loop has at most `pinhole_edges` edges (and more interior than
 /// border vertices) are closed so too, leaving out at most a vertex per 5 edges; and (D-48) the
 /// slits, loops of up to 48 edges whose sides are at most 1.5 spacings apart, as D-38 closes a

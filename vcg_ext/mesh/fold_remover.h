@@ -1,11 +1,12 @@
 // D-32's remover (fold_removal.h): the mesh as the pairs are resolved, faces retired and added,
 // with the steps that change it. Internal to the fold removal; its parts are defined by job:
 // fold_removal.cpp (the pairs and cuts), fold_remover_fills.cpp (fans and discs refilled),
-// fold_remover_loops.cpp (short border loops, D-38, D-45, D-48) and fold_remover_put_back.cpp
-// (vertices put back, D-37, D-41).
+// fold_remover_loops.cpp (short border loops, D-38, D-45, D-48), fold_remover_put_back.cpp
+// (vertices put back, D-37, D-41) and fold_remover_pieces.cpp (small pieces absorbed, D-55).
 #pragma once
 
 #include "geometry.h"
+#include "graph/concurrent_sets.h"
 #include "mesh/fans.h"
 #include "mesh/fold_removal.h"
 #include "mesh/small_holes_fill.h"
@@ -282,6 +283,27 @@ private:
                                                   std::size_t* out = nullptr) const;
 
     // ----------------------------------------------------------------------------------------
+    // Small pieces that lie on another surface join it: D-55 (fold_remover_pieces.cpp).
+
+    // D-55: a piece (connected by standing faces) of at most kMaxAbsorbedPieceFaces faces, not
+    // the largest, whose every point goes back over a face of another piece near it (put_back's
+    // rules) once its faces are gone, joins that surface so; else it stays as it was. Pieces in
+    // the order of their smallest vertex.
+    void absorb_small_pieces(FoldRemovalStats& stats);
+
+    // Per piece (sets labelled in the order of their smallest vertex) the standing faces of the
+    // pieces of at most `max_faces` faces but the largest piece; empty when the mesh is one
+    // piece.
+    std::vector<std::vector<std::uint32_t>> small_pieces(std::size_t max_faces) const;
+
+    // The vertices joined by standing faces (a set's root is its smallest vertex, for any thread
+    // count).
+    ConcurrentSets standing_pieces() const;
+
+    // Whether some vertex at v's position has a standing face (v itself or a copy of it).
+    bool point_has_standing_face(std::uint32_t v) const;
+
+    // ----------------------------------------------------------------------------------------
     // Vertices put back into faces near them: D-37, D-41 (fold_remover_put_back.cpp).
 
     // Puts removed vertices back where they fit into a face around the hole's `corners` (the
@@ -337,8 +359,9 @@ private:
 
     // D-41: every face v goes over must face v's own normal, not only the sum of the new
     // triangles' corners' normals: two sheets closer than a spacing with opposed normals would
-    // otherwise trade points (a point of one went into a face of the other).
-    bool put_back(std::uint32_t v);
+    // otherwise trade points (a point of one went into a face of the other). Without
+    // `facing`, the new triangles need not face their corners' normals (D-55).
+    bool put_back(std::uint32_t v, bool facing = true);
 
     // intersects_gathered() among the gathered faces that still stand.
     bool intersects_gathered_standing(const Triangle& t) const;

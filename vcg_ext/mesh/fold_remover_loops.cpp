@@ -149,16 +149,7 @@ std::vector<std::uint8_t>
 Remover::pieces_closed_but_for_pinholes(const std::vector<std::uint32_t>& starts,
                                         const std::vector<std::size_t>& loop_edges) const {
     const std::size_t n = positions_.size();
-    ConcurrentSets pieces(n, exec_);
-    parallel_for_blocks(exec_, triangles_.size(), kCheapBlock,
-                        [&](std::size_t, std::size_t first, std::size_t end) {
-                            for (std::size_t f = first; f < end; ++f)
-                                if (alive_[f]) {
-                                    const Triangle& t = triangles_[f];
-                                    pieces.unite(t[0], t[1]);
-                                    pieces.unite(t[1], t[2]);
-                                }
-                        });
+    ConcurrentSets pieces = standing_pieces();
     constexpr std::int32_t kNotAsked = -1;
     std::vector<std::int32_t> slot_of_root(n, kNotAsked);
     std::vector<std::int32_t> start_slot(starts.size());

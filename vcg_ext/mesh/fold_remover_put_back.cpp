@@ -182,7 +182,7 @@ bool Remover::low_over(std::uint32_t v, std::uint32_t f) const {
            kMaxPutBackHeight * longest * n.Norm();
 }
 
-bool Remover::put_back(std::uint32_t v) {
+bool Remover::put_back(std::uint32_t v, bool facing) {
     std::vector<Split> splits = splits_near(v);
     // (lengthens the border, −smallest angle, split): a longer border only where nothing else
     // fits
@@ -196,7 +196,7 @@ bool Remover::put_back(std::uint32_t v) {
         for (std::size_t k = 0; k < split.triangles.size() && proper_split; ++k) {
             const Triangle& t = split.triangles[k];
             proper_split = normal_of(t).dot(normal_of(triangles_[split.source[k]])) > 0 &&
-                           proper(t, true) && !repeats_a_face(t);
+                           proper(t, facing) && !repeats_a_face(t);
             smallest = std::min(smallest, angle(t));
         }
         if (!proper_split) continue;
