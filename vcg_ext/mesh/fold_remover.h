@@ -261,7 +261,8 @@ private:
     // face near it, or false.
     bool put_back_taken_out();
 
-    // The vertices the faces retired since begin_undo() left without a face.
+    // The points the faces retired since begin_undo() left without a face (no copy of them
+    // stands), one vertex each.
     std::vector<std::uint32_t> taken_out() const;
 
     // The faces stand as they did at `undo`.

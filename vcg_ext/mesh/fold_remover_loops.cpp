@@ -254,13 +254,20 @@ bool Remover::put_back_taken_out() {
 }
 
 std::vector<std::uint32_t> Remover::taken_out() const {
-    std::vector<std::uint32_t> out;
+    // One vertex per point that no copy holds in a face any more: a copy that lost its faces
+    // after the point's other copies had lost theirs (D-55 leaves a pinched copy out while
+    // another stands) takes the point with it otherwise.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> out; // (representative, vertex)
     for (std::uint32_t f : *retired_log_)
         for (std::uint32_t v : triangles_[f])
-            if (representative_[v] == v && faces_of(v).empty()) out.push_back(v);
+            if (!point_has_standing_face(v)) out.emplace_back(representative_[v], v);
     std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
-    return out;
+    out.erase(std::unique(out.begin(), out.end(),
+                          [](const auto& a, const auto& b) { return a.first == b.first; }),
+              out.end());
+    std::vector<std::uint32_t> vertices;
+    for (const auto& [representative, v] : out) vertices.push_back(v);
+    return vertices;
 }
 
 void Remover::rewind(const Undo& undo) {
