@@ -313,29 +313,39 @@ MeshStats kept_and_clean(const TestMesh& m, const FoldRemoval& r,
     return s;
 }
 
+// `corners` and `faces` (over them) appended to m.
+void add_piece(TestMesh& m, const std::vector<Vec3>& corners, const std::vector<Triangle>& faces) {
+    const auto first = std::uint32_t(m.positions.size());
+    m.positions.insert(m.positions.end(), corners.begin(), corners.end());
+    for (Triangle t : faces) m.triangles.push_back({first + t[0], first + t[1], first + t[2]});
+}
+
+// remove_folds on `m` (normals up, no fold in it), over `triangles`.
+FoldRemoval removed_facing_up(const TestMesh& m, std::vector<Triangle>& triangles) {
+    triangles = m.triangles;
+    const std::vector<Vec3> normals(m.positions.size(), Vec3(0, 0, 1));
+    FoldRemoval r = remove_folds(m.positions, normals, triangles, {});
+    EXPECT_EQ(r.stats.pairs_before, 0u);
+    return r;
+}
+
 // D-55: small pieces lying on a surface join it, every point kept. On a flat patch (normals
-// up): a closed tetrahedron a hundredth of the spacing above it (a bubble) and a single triangle
+// up): a closed tetrahedron a twelfth of the spacing above it (a bubble) and a single triangle
 // (a scrap) go in, their points splitting the patch's faces; a tetrahedron far above stays, and
 // so does a triangle with one corner too high over the patch (a piece joins whole or not at
 // all: its two low corners stay in it).
 TEST(FoldRemoval, SmallPiecesOnASurfaceJoinIt) {
     TestMesh m = testing::square_patch(8);
-    const auto piece = [&](std::vector<Vec3> corners, std::vector<Triangle> faces) {
-        const auto first = std::uint32_t(m.positions.size());
-        m.positions.insert(m.positions.end(), corners.begin(), corners.end());
-        for (Triangle t : faces) m.triangles.push_back({first + t[0], first + t[1], first + t[2]});
-    };
     const std::vector<Triangle> tetrahedron{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
-    piece({{0.30, 0.33, 0.010}, {0.42, 0.36, 0.012}, {0.36, 0.45, 0.008}, {0.37, 0.38, 0.03}},
-          tetrahedron);
-    piece({{0.62, 0.60, 0.005}, {0.70, 0.62, 0.004}, {0.66, 0.69, 0.006}}, {{0, 1, 2}});
-    piece({{0.30, 0.33, 1.0}, {0.42, 0.36, 1.0}, {0.36, 0.45, 1.0}, {0.37, 0.38, 1.02}},
-          tetrahedron);
-    piece({{0.15, 0.80, 0.005}, {0.26, 0.81, 0.004}, {0.20, 0.88, 0.3}}, {{0, 1, 2}});
-    const std::vector<Vec3> normals(m.positions.size(), Vec3(0, 0, 1));
-    std::vector<Triangle> triangles = m.triangles;
-    const FoldRemoval r = remove_folds(m.positions, normals, triangles, {});
-    EXPECT_EQ(r.stats.pairs_before, 0u);
+    add_piece(m,
+              {{0.30, 0.33, 0.010}, {0.42, 0.36, 0.012}, {0.36, 0.45, 0.008}, {0.37, 0.38, 0.03}},
+              tetrahedron);
+    add_piece(m, {{0.62, 0.60, 0.005}, {0.70, 0.62, 0.004}, {0.66, 0.69, 0.006}}, {{0, 1, 2}});
+    add_piece(m, {{0.30, 0.33, 1.0}, {0.42, 0.36, 1.0}, {0.36, 0.45, 1.0}, {0.37, 0.38, 1.02}},
+              tetrahedron);
+    add_piece(m, {{0.15, 0.80, 0.005}, {0.26, 0.81, 0.004}, {0.20, 0.88, 0.3}}, {{0, 1, 2}});
+    std::vector<Triangle> triangles;
+    const FoldRemoval r = removed_facing_up(m, triangles);
     EXPECT_EQ(r.stats.pieces_absorbed, 2u);
     EXPECT_EQ(r.stats.points_absorbed, 7u);
     const MeshStats s = kept_and_clean(m, r, triangles);
@@ -345,6 +355,61 @@ TEST(FoldRemoval, SmallPiecesOnASurfaceJoinIt) {
     std::size_t largest = 0;
     for (const ComponentTopology& c : s.components) largest = std::max(largest, c.faces);
     EXPECT_EQ(largest, 128u + 2u * 7u);
+}
+
+// D-55: a bubble pinched to the surface at one of its points (a copy of a patch vertex, as §5.8
+// makes it) joins the surface with its three other points; the copy goes, its point stays in
+// the patch.
+TEST(FoldRemoval, APinchedBubbleJoinsWithoutItsCopy) {
+    TestMesh m = testing::square_patch(8);
+    const std::size_t patch_vertices = m.positions.size();
+    const Vec3 pinch = m.positions[4 * 9 + 4];
+    add_piece(m,
+              {pinch, pinch + Vec3(0.05, 0.02, 0.010), pinch + Vec3(0.02, 0.06, 0.012),
+               pinch + Vec3(0.04, 0.04, 0.03)},
+              {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}});
+    std::vector<Triangle> triangles;
+    const FoldRemoval r = removed_facing_up(m, triangles);
+    EXPECT_EQ(r.stats.pieces_absorbed, 1u);
+    EXPECT_EQ(r.stats.points_absorbed, 3u);
+    ASSERT_EQ(r.vertex_source.size(), m.positions.size() - 1); // the copy
+    std::vector<std::uint32_t> kept(r.vertex_source);
+    std::sort(kept.begin(), kept.end());
+    for (std::uint32_t v = 0; v < patch_vertices; ++v)
+        EXPECT_TRUE(std::binary_search(kept.begin(), kept.end(), v)) << v;
+    std::vector<Vec3> positions;
+    for (std::uint32_t v : r.vertex_source) positions.push_back(m.positions[v]);
+    EXPECT_TRUE(self_intersecting_pairs(positions, triangles, {}).empty());
+    const MeshStats s = measure_mesh(positions.size(), triangles);
+    EXPECT_EQ(s.components.size(), 1u);
+    EXPECT_EQ(s.non_manifold_edges + s.non_manifold_vertices, 0u);
+    EXPECT_EQ(s.inconsistently_oriented_edges, 0u);
+    EXPECT_EQ(s.boundary_edges, 32u);
+    EXPECT_EQ(s.faces, 128u + 2u * 3u);
+}
+
+// D-55: a piece that points of an earlier one joined (here a scrap beside a quad's border, both
+// half a unit above the patch) is not the piece it was: it stays as it stands, and nothing
+// reaches the patch.
+TEST(FoldRemoval, APieceThatTookPointsStays) {
+    TestMesh m = testing::square_patch(8);
+    add_piece(m, {{0.46, 0.26, 0.5}, {0.52, 0.30, 0.5}, {0.46, 0.34, 0.5}}, {{0, 1, 2}});
+    add_piece(m, {{0.2, 0.2, 0.5}, {0.4, 0.2, 0.5}, {0.4, 0.4, 0.5}, {0.2, 0.4, 0.5}},
+              {{0, 1, 2}, {0, 2, 3}});
+    std::vector<Triangle> triangles;
+    const FoldRemoval r = removed_facing_up(m, triangles);
+    const MeshStats s = kept_and_clean(m, r, triangles);
+    EXPECT_EQ(r.stats.pieces_absorbed, 1u); // the scrap, into the quad
+    EXPECT_EQ(r.stats.points_absorbed, 3u);
+    ASSERT_EQ(s.components.size(), 2u);
+    std::size_t largest = 0;
+    for (const ComponentTopology& c : s.components) largest = std::max(largest, c.faces);
+    EXPECT_EQ(largest, 128u); // the patch took nothing
+    for (std::uint32_t v : r.vertex_source) {
+        if (v >= 81) {
+            EXPECT_EQ(m.positions[v][2], 0.5);
+        }
+    }
 }
 
 // D-45 (HRsR): a piece closed but for loops of at most `pinhole_edges` edges is

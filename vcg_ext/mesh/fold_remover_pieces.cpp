@@ -76,24 +76,31 @@ void Remover::absorb_small_pieces(FoldRemovalStats& stats) {
         }
         std::sort(points.begin(), points.end());
         points.erase(std::unique(points.begin(), points.end()), points.end());
+        // Points of an earlier piece joined this one's border without splitting its faces (a
+        // corner closed, a triangle across an edge): its vertices stand in those new faces, and
+        // the piece is not what was counted either.
+        bool absorbed = std::none_of(points.begin(), points.end(),
+                                     [&](std::uint32_t v) { return has_standing_face(v); });
         // A point whose copy stands elsewhere (a bubble pinched off the surface at it) is in
         // the mesh still; every other goes back over a face near it, or the piece stays.
-        const bool absorbed = std::all_of(points.begin(), points.end(), [&](std::uint32_t v) {
-            if (point_has_standing_face(v)) return true;
+        std::size_t placed = 0;
+        for (std::size_t i = 0; i < points.size() && absorbed; ++i) {
+            const std::uint32_t v = points[i];
+            if (point_has_standing_face(v)) continue;
             // The noise of the written coordinates may turn the faces there every way: a split
             // that faces away from the corners' normals but turns as the face it replaces does
             // and crosses nothing is kept too (the bubbles of the 1M graded triple torus).
-            return put_back(v) || put_back(v, false);
-        });
+            absorbed = put_back(v) || put_back(v, false);
+            placed += absorbed;
+        }
         if (absorbed) {
             ++stats.pieces_absorbed;
-            stats.points_absorbed += points.size();
+            stats.points_absorbed += placed;
         } else {
             rewind(undo);
             joined_border_ = undo.joined_border;
         }
         retired_log_.reset();
-        reinserted_ = undo.reinserted;
     }
 }
 
