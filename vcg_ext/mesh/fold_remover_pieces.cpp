@@ -1,10 +1,8 @@
 // Small pieces that lie on another surface join it (D-55, fold_remover.h): RsR on a noisy cloud
 // leaves bubbles of a few points and scraps beside the surface they belong to.
-#include "graph/concurrent_sets.h"
 #include "mesh/fold_remover.h"
 
 #include <algorithm>
-#include <unordered_map>
 
 namespace hrsr::folds {
 
