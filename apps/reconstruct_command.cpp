@@ -101,6 +101,7 @@ nlohmann::json fold_repair_json(const ReconstructionReport& r) {
             {"slits_closed", r.fold_removal.slits_closed},
             {"pieces_absorbed", r.fold_removal.pieces_absorbed},
             {"points_absorbed", r.fold_removal.points_absorbed},
+            {"piece_holes_closed", r.fold_removal.piece_holes_closed},
             {"intersecting_pairs_left", r.fold_removal.pairs_after}};
 }
 
@@ -272,10 +273,12 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
         std::printf("  folds: %zu intersecting triangle pairs, %zu edge flips, %zu pairs left; "
                     "%zu vertices taken out (%zu holes filled again), %zu faces cut, %zu pairs "
                     "left; %zu points in no triangle placed into a face; %zu small holes "
-                    "and %zu slits closed; %zu small pieces joined the surface they lie on\n",
+                    "and %zu slits closed; %zu small pieces joined the surface they lie on (%zu "
+                    "of them closing the hole they lay in)\n",
                     r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after,
                     f.vertices_removed, f.holes_refilled, f.faces_cut, f.pairs_after,
-                    f.points_placed, f.small_holes_closed, f.slits_closed, f.pieces_absorbed);
+                    f.points_placed, f.small_holes_closed, f.slits_closed, f.pieces_absorbed,
+                    f.piece_holes_closed);
     }
     if (r.flat_faces.found > 0)
         std::printf("  faces without area (corners on one line): %zu, %zu edges flipped, %zu taken "

@@ -116,12 +116,14 @@ void FilterHrsrPlugin::log_summary(const hrsr::ReconstructionReport& r, double s
                 "flips, %zu pairs left; %zu vertices taken out (%zu holes filled again), %zu "
                 "faces cut, %zu pairs left; %zu points in no triangle placed into a face (D-37); "
                 "%zu small holes closed (D-38), %zu slits closed (D-48); %zu small pieces (%zu "
-                "points) joined the surface they lie on (D-55)",
+                "points) joined the surface they lie on (D-55), %zu of them closing the hole they "
+                "lay in (D-56)",
                 r.fold_repair.pairs_before, r.fold_repair.flips, r.fold_repair.pairs_after,
                 r.fold_removal.vertices_removed, r.fold_removal.holes_refilled,
                 r.fold_removal.faces_cut, r.fold_removal.pairs_after, r.fold_removal.points_placed,
                 r.fold_removal.small_holes_closed, r.fold_removal.slits_closed,
-                r.fold_removal.pieces_absorbed, r.fold_removal.points_absorbed);
+                r.fold_removal.pieces_absorbed, r.fold_removal.points_absorbed,
+                r.fold_removal.piece_holes_closed);
     if (r.flat_faces.found > 0)
         log_message("HRsR: %zu faces without area (corners on one line, D-36): %zu edges flipped, "
                     "%zu taken off the border, %zu left",

@@ -33,6 +33,7 @@ struct FoldRemovalStats {
     std::size_t slits_closed = 0;       ///< border loops narrower than 1.5 spacings, closed (D-48)
     std::size_t pieces_absorbed = 0;    ///< small pieces whose points went into a surface (D-55)
     std::size_t points_absorbed = 0;    ///< their points put into faces (a pinched copy is not)
+    std::size_t piece_holes_closed = 0; ///< of them, pieces in a hole that was closed (D-56)
 };
 
 /// D-36 (mesh/flat_faces.h): faces with collinear corners in the coordinates as written.

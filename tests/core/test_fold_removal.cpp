@@ -521,6 +521,65 @@ TEST(FoldRemoval, GapsOfUpToSixEdgesClose) {
     }
 }
 
+// A patch of n × n cells (spacing 1/n) with the square hole where x and y are between the given
+// cell numbers (its border corners kept), and a grid piece inside it a spacing clear of its
+// border at `height` above the patch, up to `last` in both directions.
+TestMesh patch_with_piece_in_hole(int n, int first, int last, double height) {
+    TestMesh m = without_faces(testing::square_patch(n), [&](const Vec3& p) {
+        return p[0] > (first - 0.5) / n && p[0] < (last + 0.5) / n && p[1] > (first - 0.5) / n &&
+               p[1] < (last + 0.5) / n;
+    });
+    const int side = last - first - 1; // the piece's points per row
+    std::vector<Vec3> corners;
+    std::vector<Triangle> faces;
+    for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i) // a little off the patch's grid: not a copy of it
+            corners.emplace_back((first + 1 + i + 0.1) / n, (first + 1 + j + 0.05) / n, height);
+    for (int j = 0; j + 1 < side; ++j)
+        for (int i = 0; i + 1 < side; ++i) {
+            const auto a = std::uint32_t(j * side + i);
+            const auto b = a + 1, c = a + std::uint32_t(side), d = c + 1;
+            faces.push_back({a, b, d});
+            faces.push_back({a, d, c});
+        }
+    add_piece(m, corners, faces);
+    return m;
+}
+
+// D-56: a piece lying in a hole of the surface (RsR on noise leaves a disc so, its border and
+// the hole's two faces of the rotation system) joins it: the hole closes and every point of the
+// piece goes into its fill. A hole with no piece stays (D-30: holes in the data are kept), and
+// so does a piece far above a hole.
+TEST(FoldRemoval, APieceInAHoleClosesIt) {
+    constexpr int n = 24;
+    for (const double height : {0.002, 0.5}) {
+        const TestMesh m = patch_with_piece_in_hole(n, 8, 14, height); // a 24-edge hole, 5 × 5
+        std::vector<Triangle> triangles;
+        const FoldRemoval r = removed_facing_up(m, triangles);
+        const MeshStats s = kept_and_clean(m, r, triangles);
+        const bool joins = height < 0.1;
+        EXPECT_EQ(r.stats.pieces_absorbed, joins ? 1u : 0u) << height;
+        EXPECT_EQ(r.stats.piece_holes_closed, joins ? 1u : 0u) << height;
+        EXPECT_EQ(r.stats.points_absorbed, joins ? 25u : 0u) << height;
+        EXPECT_EQ(s.components.size(), joins ? 1u : 2u) << height;
+        EXPECT_EQ(s.boundary_edges, 4u * n + (joins ? 0u : 24u + 16u)) << height;
+        EXPECT_EQ(genera(s), (std::vector<long>(s.components.size(), 0))) << height;
+    }
+}
+
+// D-56 stops at holes of kMaxOptimisedHole (48) edges: a piece in a 52-edge hole stays, and so
+// does the hole.
+TEST(FoldRemoval, APieceInALargeHoleStays) {
+    constexpr int n = 24;
+    const TestMesh m = patch_with_piece_in_hole(n, 4, 17, 0.002); // 52 edges
+    std::vector<Triangle> triangles;
+    const FoldRemoval r = removed_facing_up(m, triangles);
+    const MeshStats s = kept_and_clean(m, r, triangles);
+    EXPECT_EQ(r.stats.piece_holes_closed, 0u);
+    EXPECT_EQ(s.components.size(), 2u);
+    EXPECT_EQ(s.boundary_edges, 4u * n + 52u + 4u * 11u);
+}
+
 // The shipped sample at the defaults, both methods: the written coordinates (float) have no
 // intersecting pair, every point taken out is reported as dropped in a fold, and r_v stays.
 TEST(FoldRemoval, OwlAtDefaultsHasNoIntersectingPair) {

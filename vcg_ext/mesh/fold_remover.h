@@ -268,6 +268,10 @@ private:
     // The faces stand as they did at `undo`.
     void rewind(const Undo& undo);
 
+    // The change since `undo` is kept or rewound; either way no vertex it took out counts as
+    // put back (each is back, or lost and counted as removed by the caller).
+    void end_undo(const Undo& undo, bool keep);
+
     // The border loop that leaves v along a border edge, as the hole a fill closes (corners in
     // the order of the faces that would fill it), if it is short, runs along a cut face (an edge
     // whose other face in the given mesh has gone) and has no edge that was on the border of the
@@ -288,9 +292,29 @@ private:
 
     // D-55: a piece (connected by standing faces) of at most kMaxAbsorbedPieceFaces faces, not
     // the largest, whose every point goes back over a face of another piece near it (put_back's
-    // rules) once its faces are gone, joins that surface so; else it stays as it was. Pieces in
+    // rules) once its faces are gone, joins that surface so; else it stays as it was. D-56
+    // first: a piece of at most kMaxPieceInHoleFaces faces lying in a short border loop of
+    // another piece joins it by closing the loop, its points going into the fill. Pieces in
     // the order of their smallest vertex.
     void absorb_small_pieces(FoldRemovalStats& stats);
+
+    enum class Absorbed { kYes, kNo, kLosingAFew };
+    // One piece's faces out and its points over faces near them, or the piece stands again;
+    // `close_holes_around`: the short border loops around it closed first (D-56), and up to
+    // an eighth of its points may stay out if `may_lose` (else kLosingAFew says that so few
+    // did).
+    Absorbed absorb_piece(const std::vector<std::uint32_t>& piece, bool close_holes_around,
+                          FoldRemovalStats& stats, bool may_lose = false);
+
+    // D-56: the border loops of at most kMaxOptimisedHole edges near the piece (its faces
+    // already out) that surround the piece's centre, closed as D-38 closes a gap; false if
+    // there is none or one does not close.
+    bool close_holes_under(const std::vector<std::uint32_t>& piece,
+                           const std::vector<std::uint32_t>& points);
+
+    // Whether the loop winds around p in its own plane (Newell's), p no further from that plane
+    // than the loop's radius.
+    bool surrounds(const std::vector<std::uint32_t>& loop, const Vec3& p) const;
 
     // Per piece (sets labelled in the order of their smallest vertex) the standing faces of the
     // pieces of at most `max_faces` faces but the largest piece; empty when the mesh is one

@@ -133,15 +133,8 @@ bool Remover::close_loop(const Hole& hole, std::size_t limit, FoldRemovalStats& 
         for (std::uint32_t r : taken_out()) lost += !put_back(r);
         closed = lost <= may_lose;
     }
-    if (closed) {
-        stats.vertices_removed += lost;
-    } else {
-        rewind(undo);
-        joined_border_ = undo.joined_border;
-    }
-    retired_log_.reset();
-    // Every vertex it took out is back (or lost, counted as removed): none counts as put back.
-    reinserted_ = undo.reinserted;
+    if (closed) stats.vertices_removed += lost;
+    end_undo(undo, closed);
     return closed;
 }
 
@@ -268,6 +261,16 @@ std::vector<std::uint32_t> Remover::taken_out() const {
     std::vector<std::uint32_t> vertices;
     for (const auto& [representative, v] : out) vertices.push_back(v);
     return vertices;
+}
+
+void Remover::end_undo(const Undo& undo, bool keep) {
+    if (!keep) {
+        rewind(undo);
+        joined_border_ = undo.joined_border;
+    }
+    retired_log_.reset();
+    // Every vertex it took out is back (or lost, counted as removed): none counts as put back.
+    reinserted_ = undo.reinserted;
 }
 
 void Remover::rewind(const Undo& undo) {

@@ -3,6 +3,7 @@
 #include "mesh/fold_remover.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hrsr::folds {
 
@@ -11,8 +12,44 @@ namespace {
 // A larger piece is a surface of its own, not a scrap: 200 faces are about 100 points, RsR's
 // smallest component (`min_component_size`).
 constexpr std::size_t kMaxAbsorbedPieceFaces = 200;
+// D-56: a piece inside a loop of at most kMaxOptimisedHole (48) edges covers at most about a
+// disc of that perimeter, 48² / 4π ≈ 183 spacings², some 370 faces; twice that for the folds
+// of noise.
+constexpr std::size_t kMaxPieceInHoleFaces = 800;
+// D-56: at most one point in kMaxLostInHole of such a piece may stay out.
+constexpr std::size_t kMaxLostInHole = 8;
 
 } // namespace
+
+bool Remover::surrounds(const std::vector<std::uint32_t>& loop, const Vec3& p) const {
+    // The loop's plane: Newell's normal (its area vector) through the corners' mean.
+    Vec3 normal(0, 0, 0), mean(0, 0, 0);
+    double perimeter = 0;
+    const std::size_t m = loop.size();
+    for (std::size_t i = 0; i < m; ++i) {
+        const Vec3& a = positions_[loop[i]];
+        const Vec3& b = positions_[loop[(i + 1) % m]];
+        normal += a ^ b;
+        mean += a;
+        perimeter += (b - a).Norm();
+    }
+    mean /= double(m);
+    if (normal.Norm() == 0) return false;
+    normal.Normalize();
+    // A piece further off the plane than the loop's radius is not in the hole.
+    if (std::abs((p - mean).dot(normal)) > perimeter / (2 * M_PI)) return false;
+    // Winding number of the loop around p, in the plane.
+    Vec3 u = normal ^ (std::abs(normal[0]) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
+    u.Normalize();
+    const Vec3 w = normal ^ u;
+    double turned = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const Vec3 a = positions_[loop[i]] - p, b = positions_[loop[(i + 1) % m]] - p;
+        turned += std::atan2(a.dot(u) * b.dot(w) - a.dot(w) * b.dot(u),
+                             a.dot(u) * b.dot(u) + a.dot(w) * b.dot(w));
+    }
+    return std::abs(turned) > M_PI; // 2π around, 0 outside
+}
 
 ConcurrentSets Remover::standing_pieces() const {
     ConcurrentSets sets(positions_.size(), exec_);
@@ -62,44 +99,112 @@ bool Remover::point_has_standing_face(std::uint32_t v) const {
 }
 
 void Remover::absorb_small_pieces(FoldRemovalStats& stats) {
-    for (const std::vector<std::uint32_t>& piece : small_pieces(kMaxAbsorbedPieceFaces)) {
+    for (const std::vector<std::uint32_t>& piece : small_pieces(kMaxPieceInHoleFaces)) {
         // A piece that took points of one before it is no longer the faces it was: it stays.
         if (!std::all_of(piece.begin(), piece.end(), [&](std::uint32_t f) { return alive_[f]; }))
             continue;
-        const Undo undo = begin_undo();
-        std::vector<std::uint32_t> points;
-        for (std::uint32_t f : piece) {
-            retire(f);
-            points.insert(points.end(), triangles_[f].begin(), triangles_[f].end());
-        }
-        std::sort(points.begin(), points.end());
-        points.erase(std::unique(points.begin(), points.end()), points.end());
-        // Points of an earlier piece joined this one's border without splitting its faces (a
-        // corner closed, a triangle across an edge): its vertices stand in those new faces, and
-        // the piece is not what was counted either.
-        bool absorbed = std::none_of(points.begin(), points.end(),
-                                     [&](std::uint32_t v) { return has_standing_face(v); });
-        // A point whose copy stands elsewhere (a bubble pinched off the surface at it) is in
-        // the mesh still; every other goes back over a face near it, or the piece stays.
-        std::size_t placed = 0;
-        for (std::size_t i = 0; i < points.size() && absorbed; ++i) {
-            const std::uint32_t v = points[i];
-            if (point_has_standing_face(v)) continue;
-            // The noise of the written coordinates may turn the faces there every way: a split
-            // that faces away from the corners' normals but turns as the face it replaces does
-            // and crosses nothing is kept too (the bubbles of the 1M graded triple torus).
-            absorbed = put_back(v) || put_back(v, false);
-            placed += absorbed;
-        }
-        if (absorbed) {
-            ++stats.pieces_absorbed;
-            stats.points_absorbed += placed;
-        } else {
-            rewind(undo);
-            joined_border_ = undo.joined_border;
-        }
-        retired_log_.reset();
+        // In a hole, the hole closes under it (D-56) rather than its points lengthening the
+        // hole's border (D-41); a closing that leaves a few points out only where D-55 cannot
+        // place them all either.
+        const Absorbed in_hole = absorb_piece(piece, true, stats);
+        if (in_hole == Absorbed::kYes || (piece.size() <= kMaxAbsorbedPieceFaces &&
+                                          absorb_piece(piece, false, stats) == Absorbed::kYes))
+            continue;
+        if (in_hole == Absorbed::kLosingAFew) absorb_piece(piece, true, stats, true);
     }
+}
+
+Remover::Absorbed Remover::absorb_piece(const std::vector<std::uint32_t>& piece,
+                                        bool close_holes_around, FoldRemovalStats& stats,
+                                        bool may_lose) {
+    const Undo undo = begin_undo();
+    std::vector<std::uint32_t> points;
+    for (std::uint32_t f : piece) {
+        retire(f);
+        points.insert(points.end(), triangles_[f].begin(), triangles_[f].end());
+    }
+    std::sort(points.begin(), points.end());
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    // Points of an earlier piece joined this one's border without splitting its faces (a
+    // corner closed, a triangle across an edge): its vertices stand in those new faces, and
+    // the piece is not what was counted either.
+    bool absorbed = std::none_of(points.begin(), points.end(),
+                                 [&](std::uint32_t v) { return has_standing_face(v); });
+    if (absorbed && close_holes_around) absorbed = close_holes_under(piece, points);
+    // A point whose copy stands elsewhere (a bubble pinched off the surface at it) is in
+    // the mesh still; every other goes back over a face near it, or the piece stays.
+    std::size_t placed = 0;
+    const auto place = [&](std::uint32_t v) {
+        if (point_has_standing_face(v)) return true;
+        // The noise of the written coordinates may turn the faces there every way: a split
+        // that faces away from the corners' normals but turns as the face it replaces does
+        // and crosses nothing is kept too (the bubbles of the 1M graded triple torus).
+        const bool back = put_back(v) || put_back(v, false);
+        placed += back && std::binary_search(points.begin(), points.end(), v);
+        return back;
+    };
+    std::size_t lost = 0;
+    bool losing_a_few = false;
+    if (!close_holes_around) {
+        for (std::size_t i = 0; i < points.size() && absorbed; ++i) absorbed = place(points[i]);
+    } else if (absorbed) {
+        // Into a closed hole the points go in rounds (one that crossed a face may fit once its
+        // neighbours split it), with the fans the closing took out; where the noise stacks
+        // them 1–2 spacings deep, a few fit nowhere, and up to an eighth of the piece's
+        // points may stay out.
+        std::vector<std::uint32_t> out = taken_out();
+        for (std::size_t before = out.size() + 1; !out.empty() && out.size() < before;) {
+            before = out.size();
+            out.erase(std::remove_if(out.begin(), out.end(), place), out.end());
+        }
+        lost = out.size();
+        losing_a_few = lost > 0 && lost <= points.size() / kMaxLostInHole;
+        absorbed = lost == 0 || (losing_a_few && may_lose);
+    }
+    if (absorbed) {
+        ++stats.pieces_absorbed;
+        stats.points_absorbed += placed;
+        stats.vertices_removed += lost;
+        stats.piece_holes_closed += close_holes_around;
+    }
+    end_undo(undo, absorbed);
+    if (absorbed) return Absorbed::kYes;
+    return losing_a_few ? Absorbed::kLosingAFew : Absorbed::kNo;
+}
+
+bool Remover::close_holes_under(const std::vector<std::uint32_t>& piece,
+                                const std::vector<std::uint32_t>& points) {
+    const Box box = corners_box(points);
+    Vec3 centre(0, 0, 0);
+    for (std::uint32_t v : points) centre += positions_[v];
+    centre /= double(points.size());
+    double edge = 0;
+    for (std::uint32_t f : piece)
+        edge += (positions_[triangles_[f][0]] - positions_[triangles_[f][1]]).Norm();
+    edge /= double(piece.size());
+    gather_standing(Box{box.lo - Vec3(edge, edge, edge), box.hi + Vec3(edge, edge, edge)});
+    std::vector<std::uint32_t> starts;
+    for (const auto& [f, b] : near_.found())
+        for (std::uint32_t v : triangles_[f]) starts.push_back(v);
+    std::sort(starts.begin(), starts.end());
+    starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
+    // One walk per border loop (each walk gives its outcome to the vertices it passes).
+    const std::vector<std::size_t> loop_edges = border_loops_at(starts, kMaxOptimisedHole);
+    std::vector<Hole> holes;
+    std::vector<std::uint32_t> tried;
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+        const std::uint32_t v = starts[i];
+        if (loop_edges[i] < 3 || loop_edges[i] > kMaxOptimisedHole ||
+            std::find(tried.begin(), tried.end(), v) != tried.end())
+            continue;
+        const std::optional<Hole> hole = small_hole(v, false, kMaxOptimisedHole);
+        if (!hole) continue;
+        tried.insert(tried.end(), hole->corners.begin(), hole->corners.end());
+        if (surrounds(hole->corners, centre)) holes.push_back(*hole);
+    }
+    if (holes.empty()) return false;
+    return std::all_of(holes.begin(), holes.end(),
+                       [&](const Hole& hole) { return close_small_hole(hole, kMaxOptimisedHole); });
 }
 
 } // namespace hrsr::folds
