@@ -246,6 +246,21 @@ TEST(FoldRemoval, PointsInNoTriangleArePlacedIntoAFaceWhereTheyFit) {
     EXPECT_EQ(p.mesh.boundary_edges, 32u);
 }
 
+// D-57: where the normals around a face are turned away (noise, a clump of flipped normals) no
+// split of it faces its corners' normals; a point in no triangle over it still goes in, by a
+// split that turns as the face does and crosses nothing.
+TEST(FoldRemoval, APointGoesInWhereTheNormalsAroundItsFaceAreTurned) {
+    TestMesh m = testing::square_patch(8);
+    const std::size_t patch_vertices = m.positions.size();
+    std::vector<Vec3> normals(patch_vertices, Vec3(0, 0, 1));
+    for (int i = 3; i <= 4; ++i) // the cell from (3, 2) to (4, 3), spacing 1/8
+        for (int j = 2; j <= 3; ++j) normals[std::size_t(i * 9 + j)] = Vec3(0, 0, -1);
+    m.positions.emplace_back(0.40, 0.33, 0.01); // over that cell's upper triangle
+    normals.emplace_back(0, 0, 1);
+    const Placed p = expect_placed(m, normals, patch_vertices, 1, 2);
+    EXPECT_EQ(p.mesh.boundary_edges, 32u);
+}
+
 // D-37 at the border: a point beyond a concave corner of the border (a patch without its last
 // cell and corner vertex) closes the corner with two triangles; the border keeps its length.
 TEST(FoldRemoval, APointBeyondABorderCornerClosesIt) {

@@ -346,6 +346,8 @@ private:
     // with the largest smallest angle.
     // D-37: vertices that never had a face (points in no triangle, given as such) go the same
     // way, within a grid cell of where they are.
+    // D-57: in rounds while one places a point; where no facing split fits, one whose triangles
+    // only turn as the face they replace does.
     void put_back_the_rest();
 
     bool never_had_a_face(std::uint32_t v) const;

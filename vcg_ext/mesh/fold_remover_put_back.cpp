@@ -6,6 +6,7 @@
 #include "geometry.h"
 #include "mesh/triangle_against_faces.h"
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -20,6 +21,9 @@ constexpr double kMaxPutBackHeight = 0.5;
 // a border edge (D-41), only if no angle of them is smaller (a sliver hanging off the border is
 // worse than a point left out).
 constexpr double kMinBorderPutBackAngle = 15.0 * M_PI / 180.0;
+// D-57: the points still out go back in at most this many rounds (the last placements on the
+// lion come in the third, on the dragon vertices and the LMS400 table in the second).
+constexpr std::size_t kPutBackRounds = 4;
 // A walk around a vertex's fan gives up after this many faces (a fan is far smaller).
 constexpr std::size_t kMaxFanWalk = 1024;
 
@@ -67,13 +71,26 @@ std::size_t Remover::reinsert(const std::vector<std::uint32_t>& removed,
 }
 
 void Remover::put_back_the_rest() {
-    for (std::uint32_t v = 0; v + 1 < at_.start.size(); ++v) {
-        if (representative_[v] != v) continue;
-        if (lost_all_faces(v)) {
-            reinserted_ += put_back(v);
-        } else if (never_had_a_face(v)) {
-            placed_ += put_back(v);
-        }
+    // D-57: the points still out, in rounds while the last one placed any (at most
+    // kPutBackRounds): a split may leave a face that another point fits into.
+    std::vector<std::uint32_t> waiting;
+    for (std::uint32_t v = 0; v + 1 < at_.start.size(); ++v)
+        if (representative_[v] == v && (lost_all_faces(v) || never_had_a_face(v)))
+            waiting.push_back(v);
+    for (std::size_t round = 0; round < kPutBackRounds && !waiting.empty(); ++round) {
+        const std::size_t before = waiting.size();
+        waiting.erase(std::remove_if(waiting.begin(), waiting.end(),
+                                     [&](std::uint32_t v) {
+                                         const bool had_faces = at_.begin(v) != at_.end(v);
+                                         // D-57: a split that turns as the face it replaces
+                                         // does but does not face its corners' normals, as
+                                         // D-55 takes one, where no facing split fits.
+                                         const bool back = put_back(v) || put_back(v, false);
+                                         (had_faces ? reinserted_ : placed_) += back;
+                                         return back;
+                                     }),
+                      waiting.end());
+        if (waiting.size() == before) break;
     }
 }
 
