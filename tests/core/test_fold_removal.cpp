@@ -537,14 +537,15 @@ TEST(FoldRemoval, GapsOfUpToSixEdgesClose) {
 }
 
 // A patch of n × n cells (spacing 1/n) with the square hole where x and y are between the given
-// cell numbers (its border corners kept), and a grid piece inside it a spacing clear of its
-// border at `height` above the patch, up to `last` in both directions.
-TestMesh patch_with_piece_in_hole(int n, int first, int last, double height) {
+// cell numbers (its border corners kept), and a grid piece of `side` × `side` points inside it
+// a spacing clear of its border (by default as large as that leaves) at `height` above the
+// patch.
+TestMesh patch_with_piece_in_hole(int n, int first, int last, double height, int side = 0) {
     TestMesh m = without_faces(testing::square_patch(n), [&](const Vec3& p) {
         return p[0] > (first - 0.5) / n && p[0] < (last + 0.5) / n && p[1] > (first - 0.5) / n &&
                p[1] < (last + 0.5) / n;
     });
-    const int side = last - first - 1; // the piece's points per row
+    if (side == 0) side = last - first - 1;
     std::vector<Vec3> corners;
     std::vector<Triangle> faces;
     for (int j = 0; j < side; ++j)
@@ -563,8 +564,7 @@ TestMesh patch_with_piece_in_hole(int n, int first, int last, double height) {
 
 // D-56: a piece lying in a hole of the surface (RsR on noise leaves a disc so, its border and
 // the hole's two faces of the rotation system) joins it: the hole closes and every point of the
-// piece goes into its fill. A hole with no piece stays (D-30: holes in the data are kept), and
-// so does a piece far above a hole.
+// piece goes into its fill. A piece far above the hole stays.
 TEST(FoldRemoval, APieceInAHoleClosesIt) {
     constexpr int n = 24;
     for (const double height : {0.002, 0.5}) {
@@ -580,6 +580,51 @@ TEST(FoldRemoval, APieceInAHoleClosesIt) {
         EXPECT_EQ(s.boundary_edges, 4u * n + (joins ? 0u : 24u + 16u)) << height;
         EXPECT_EQ(genera(s), (std::vector<long>(s.components.size(), 0))) << height;
     }
+}
+
+// D-56 keeps a hole in the data with a scrap in it (D-30): 3 × 3 points in a hole of 6 × 6
+// spacings, where a surface would have about 42, do not close it. The scrap joins the hole's
+// border by D-55 instead (its points across the border edges, D-41), every point kept.
+TEST(FoldRemoval, AScrapInAHoleLeavesItOpen) {
+    constexpr int n = 24;
+    const TestMesh m = patch_with_piece_in_hole(n, 8, 14, 0.002, 3);
+    std::vector<Triangle> triangles;
+    const FoldRemoval r = removed_facing_up(m, triangles);
+    const MeshStats s = kept_and_clean(m, r, triangles);
+    EXPECT_EQ(r.stats.piece_holes_closed, 0u);
+    EXPECT_EQ(s.boundary_loops, 2u);
+    EXPECT_GT(s.boundary_edges, 4u * n + 20u);
+}
+
+// D-56 closes holes, not rims: a piece lying in a bowl (a 7 × 7 grid of points just above an
+// 8 × 8-cell bowl, more than the bowl's 32-edge rim would need) does not cap the bowl (a fill
+// across the rim would face away from the normals); it joins the bowl's faces (D-55).
+TEST(FoldRemoval, APieceInABowlLeavesItsRimOpen) {
+    const auto bowl = [](double x, double y) {
+        return 0.5 * ((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5));
+    };
+    TestMesh m = testing::height_patch(8, bowl);
+    std::vector<Vec3> corners;
+    std::vector<Triangle> faces;
+    constexpr int side = 7;
+    for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i) {
+            const double x = (i + 1.1) / 8, y = (j + 1.05) / 8;
+            corners.emplace_back(x, y, bowl(x, y) + 0.004);
+        }
+    for (int j = 0; j + 1 < side; ++j)
+        for (int i = 0; i + 1 < side; ++i) {
+            const auto a = std::uint32_t(j * side + i);
+            faces.push_back({a, a + 1, a + side + 1});
+            faces.push_back({a, a + side + 1, a + side});
+        }
+    add_piece(m, corners, faces);
+    std::vector<Triangle> triangles;
+    const FoldRemoval r = removed_facing_up(m, triangles);
+    const MeshStats s = kept_and_clean(m, r, triangles);
+    EXPECT_EQ(r.stats.piece_holes_closed, 0u);
+    EXPECT_EQ(r.stats.pieces_absorbed, 1u); // onto the bowl's faces (D-55)
+    EXPECT_EQ(s.boundary_edges, 32u);
 }
 
 // D-56 stops at holes of kMaxOptimisedHole (48) edges: a piece in a 52-edge hole stays, and so

@@ -207,6 +207,9 @@ private:
     // of a real hole that faces already bridge: the shark's bored holes at p = 1/4).
     bool is_slit(const std::vector<std::uint32_t>& loop) const;
 
+    // The median edge of the standing faces around the loop's corners (0: none).
+    double spacing_around(const std::vector<std::uint32_t>& loop) const;
+
     // The vertices a border loop may start at: those on the border of the given mesh, and the
     // corners of faces ever added or cut (the quick tests first: most vertices are neither; a
     // vertex whose cut faces all stand again has its given faces, and its given border).
@@ -308,13 +311,22 @@ private:
 
     // D-56: the border loops of at most kMaxOptimisedHole edges near the piece (its faces
     // already out) that surround the piece's centre, closed as D-38 closes a gap; false if
-    // there is none or one does not close.
+    // there is none, if the piece has fewer than kMinHoleFill of the points a surface over one
+    // would have at the spacing around it (a hole in the data with a scrap in it stays), or if
+    // one does not close.
     bool close_holes_under(const std::vector<std::uint32_t>& piece,
                            const std::vector<std::uint32_t>& points);
 
     // Whether the loop winds around p in its own plane (Newell's), p no further from that plane
     // than the loop's radius.
     bool surrounds(const std::vector<std::uint32_t>& loop, const Vec3& p) const;
+
+    // The loop's area vector (Newell's: its length is the area it spans).
+    Vec3 area_vector(const std::vector<std::uint32_t>& loop) const;
+
+    // The loop (in fill order, as small_hole() gives it) is a hole in a surface, not the rim of
+    // one: a fill across it faces its corners' normals.
+    bool is_a_hole(const std::vector<std::uint32_t>& loop) const;
 
     // Per piece (sets labelled in the order of their smallest vertex) the standing faces of the
     // pieces of at most `max_faces` faces but the largest piece; empty when the mesh is one

@@ -66,8 +66,7 @@ void Remover::close_slits(FoldRemovalStats& stats) {
     }
 }
 
-bool Remover::is_slit(const std::vector<std::uint32_t>& loop) const {
-    const std::size_t m = loop.size();
+double Remover::spacing_around(const std::vector<std::uint32_t>& loop) const {
     std::vector<double> edges;
     for (std::uint32_t c : loop)
         any_face(c, [&](const Triangle& t) {
@@ -75,9 +74,15 @@ bool Remover::is_slit(const std::vector<std::uint32_t>& loop) const {
                 edges.push_back((positions_[t[k]] - positions_[t[(k + 1) % 3]]).Norm());
             return false;
         });
-    if (edges.empty()) return false;
+    if (edges.empty()) return 0;
     std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2), edges.end());
-    const double spacing = edges[edges.size() / 2];
+    return edges[edges.size() / 2];
+}
+
+bool Remover::is_slit(const std::vector<std::uint32_t>& loop) const {
+    const std::size_t m = loop.size();
+    const double spacing = spacing_around(loop);
+    if (spacing == 0) return false;
     double perimeter = 0;
     for (std::size_t i = 0; i < m; ++i) {
         const double edge = (positions_[loop[i]] - positions_[loop[(i + 1) % m]]).Norm();

@@ -18,8 +18,25 @@ constexpr std::size_t kMaxAbsorbedPieceFaces = 200;
 constexpr std::size_t kMaxPieceInHoleFaces = 800;
 // D-56: at most one point in kMaxLostInHole of such a piece may stay out.
 constexpr std::size_t kMaxLostInHole = 8;
+// D-56: a piece closes a hole only if it has at least this share of the points a surface over
+// the hole would have (a vertex per √3/2 spacings² of a mesh of equilateral triangles). Without
+// it the RsR lion closed loops of up to 42 edges around scraps of 3 points.
+constexpr double kMinHoleFill = 0.5;
 
 } // namespace
+
+Vec3 Remover::area_vector(const std::vector<std::uint32_t>& loop) const {
+    Vec3 twice(0, 0, 0);
+    for (std::size_t i = 0; i < loop.size(); ++i)
+        twice += positions_[loop[i]] ^ positions_[loop[(i + 1) % loop.size()]];
+    return twice / 2;
+}
+
+bool Remover::is_a_hole(const std::vector<std::uint32_t>& loop) const {
+    Vec3 normals(0, 0, 0);
+    for (std::uint32_t c : loop) normals += normals_[c];
+    return area_vector(loop).dot(normals) > 0;
+}
 
 bool Remover::surrounds(const std::vector<std::uint32_t>& loop, const Vec3& p) const {
     // The loop's plane: Newell's normal (its area vector) through the corners' mean.
@@ -157,8 +174,13 @@ Remover::Absorbed Remover::absorb_piece(const std::vector<std::uint32_t>& piece,
             before = out.size();
             out.erase(std::remove_if(out.begin(), out.end(), place), out.end());
         }
+        // Only the piece's own points may stay out: a point of the surface that a closing's fan
+        // took out goes back, or the closing is not worth it (D-38).
         lost = out.size();
-        losing_a_few = lost > 0 && lost <= points.size() / kMaxLostInHole;
+        const bool only_the_piece = std::all_of(out.begin(), out.end(), [&](std::uint32_t v) {
+            return std::binary_search(points.begin(), points.end(), v);
+        });
+        losing_a_few = lost > 0 && only_the_piece && lost <= points.size() / kMaxLostInHole;
         absorbed = lost == 0 || (losing_a_few && may_lose);
     }
     if (absorbed) {
@@ -200,11 +222,21 @@ bool Remover::close_holes_under(const std::vector<std::uint32_t>& piece,
         const std::optional<Hole> hole = small_hole(v, false, kMaxOptimisedHole);
         if (!hole) continue;
         tried.insert(tried.end(), hole->corners.begin(), hole->corners.end());
-        if (surrounds(hole->corners, centre)) holes.push_back(*hole);
+        if (is_a_hole(hole->corners) && surrounds(hole->corners, centre)) holes.push_back(*hole);
     }
     if (holes.empty()) return false;
-    return std::all_of(holes.begin(), holes.end(),
-                       [&](const Hole& hole) { return close_small_hole(hole, kMaxOptimisedHole); });
+    for (const Hole& hole : holes) {
+        const double spacing = spacing_around(hole.corners);
+        const double points_over_it =
+            area_vector(hole.corners).Norm() / (std::sqrt(3.0) / 2 * spacing * spacing);
+        if (spacing == 0 || double(points.size()) < kMinHoleFill * points_over_it) return false;
+    }
+    // A closing may take out faces at another loop's corners (a fan filled with it): each loop
+    // closes only while it is still the border loop it was.
+    return std::all_of(holes.begin(), holes.end(), [&](const Hole& hole) {
+        const std::optional<Hole> now = small_hole(hole.corners.back(), false, kMaxOptimisedHole);
+        return now && now->corners == hole.corners && close_small_hole(hole, kMaxOptimisedHole);
+    });
 }
 
 } // namespace hrsr::folds
