@@ -398,9 +398,15 @@ private:
 
     // D-41: every face v goes over must face v's own normal, not only the sum of the new
     // triangles' corners' normals: two sheets closer than a spacing with opposed normals would
-    // otherwise trade points (a point of one went into a face of the other). Without
-    // `facing`, the new triangles need not face their corners' normals (D-55).
-    bool put_back(std::uint32_t v, bool facing = true);
+    // otherwise trade points (a point of one went into a face of the other). With
+    // `or_turned`, where no split facing the corners' normals fits, one whose triangles only turn
+    // as the faces they replace do (D-55, D-57): the splits near v are found once for both.
+    bool put_back(std::uint32_t v, bool or_turned = false);
+
+    // The best of `splits` (the border lengthened last, then the largest smallest angle) whose
+    // triangles are proper (facing their corners' normals if `facing`), turn as the faces they
+    // replace do and cross no standing face, made; false if none fits.
+    bool fit_split(std::uint32_t v, const std::vector<Split>& splits, bool facing);
 
     // intersects_gathered() among the gathered faces that still stand.
     bool intersects_gathered_standing(const Triangle& t) const;

@@ -40,15 +40,12 @@ bool Remover::is_a_hole(const std::vector<std::uint32_t>& loop) const {
 
 bool Remover::surrounds(const std::vector<std::uint32_t>& loop, const Vec3& p) const {
     // The loop's plane: Newell's normal (its area vector) through the corners' mean.
-    Vec3 normal(0, 0, 0), mean(0, 0, 0);
+    Vec3 normal = area_vector(loop), mean(0, 0, 0);
     double perimeter = 0;
     const std::size_t m = loop.size();
     for (std::size_t i = 0; i < m; ++i) {
-        const Vec3& a = positions_[loop[i]];
-        const Vec3& b = positions_[loop[(i + 1) % m]];
-        normal += a ^ b;
-        mean += a;
-        perimeter += (b - a).Norm();
+        mean += positions_[loop[i]];
+        perimeter += (positions_[loop[(i + 1) % m]] - positions_[loop[i]]).Norm();
     }
     mean /= double(m);
     if (normal.Norm() == 0) return false;
@@ -156,7 +153,7 @@ Remover::Absorbed Remover::absorb_piece(const std::vector<std::uint32_t>& piece,
         // The noise of the written coordinates may turn the faces there every way: a split
         // that faces away from the corners' normals but turns as the face it replaces does
         // and crosses nothing is kept too (the bubbles of the 1M graded triple torus).
-        const bool back = put_back(v) || put_back(v, false);
+        const bool back = put_back(v, true);
         placed += back && std::binary_search(points.begin(), points.end(), v);
         return back;
     };

@@ -85,7 +85,7 @@ void Remover::put_back_the_rest() {
                                          // D-57: a split that turns as the face it replaces
                                          // does but does not face its corners' normals, as
                                          // D-55 takes one, where no facing split fits.
-                                         const bool back = put_back(v) || put_back(v, false);
+                                         const bool back = put_back(v, true);
                                          (had_faces ? reinserted_ : placed_) += back;
                                          return back;
                                      }),
@@ -199,8 +199,12 @@ bool Remover::low_over(std::uint32_t v, std::uint32_t f) const {
            kMaxPutBackHeight * longest * n.Norm();
 }
 
-bool Remover::put_back(std::uint32_t v, bool facing) {
-    std::vector<Split> splits = splits_near(v);
+bool Remover::put_back(std::uint32_t v, bool or_turned) {
+    const std::vector<Split> splits = splits_near(v);
+    return fit_split(v, splits, true) || (or_turned && fit_split(v, splits, false));
+}
+
+bool Remover::fit_split(std::uint32_t v, const std::vector<Split>& splits, bool facing) {
     // (lengthens the border, −smallest angle, split): a longer border only where nothing else
     // fits
     std::vector<std::tuple<bool, double, std::size_t>> candidates;
