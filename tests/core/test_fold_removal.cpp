@@ -335,6 +335,24 @@ void add_piece(TestMesh& m, const std::vector<Vec3>& corners, const std::vector<
     for (Triangle t : faces) m.triangles.push_back({first + t[0], first + t[1], first + t[2]});
 }
 
+// A grid piece of `side` × `side` points (point (i, j) at `at(i, j)`), two faces a cell,
+// appended to m.
+template <typename At>
+void add_grid_piece(TestMesh& m, int side, At&& at) {
+    std::vector<Vec3> corners;
+    std::vector<Triangle> faces;
+    for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i) corners.push_back(at(i, j));
+    for (int j = 0; j + 1 < side; ++j)
+        for (int i = 0; i + 1 < side; ++i) {
+            const auto a = std::uint32_t(j * side + i);
+            const auto b = a + 1, c = a + std::uint32_t(side), d = c + 1;
+            faces.push_back({a, b, d});
+            faces.push_back({a, d, c});
+        }
+    add_piece(m, corners, faces);
+}
+
 // remove_folds on `m` (normals up, no fold in it), over `triangles`.
 FoldRemoval removed_facing_up(const TestMesh& m, std::vector<Triangle>& triangles) {
     triangles = m.triangles;
@@ -546,19 +564,9 @@ TestMesh patch_with_piece_in_hole(int n, int first, int last, double height, int
                p[1] < (last + 0.5) / n;
     });
     if (side == 0) side = last - first - 1;
-    std::vector<Vec3> corners;
-    std::vector<Triangle> faces;
-    for (int j = 0; j < side; ++j)
-        for (int i = 0; i < side; ++i) // a little off the patch's grid: not a copy of it
-            corners.emplace_back((first + 1 + i + 0.1) / n, (first + 1 + j + 0.05) / n, height);
-    for (int j = 0; j + 1 < side; ++j)
-        for (int i = 0; i + 1 < side; ++i) {
-            const auto a = std::uint32_t(j * side + i);
-            const auto b = a + 1, c = a + std::uint32_t(side), d = c + 1;
-            faces.push_back({a, b, d});
-            faces.push_back({a, d, c});
-        }
-    add_piece(m, corners, faces);
+    add_grid_piece(m, side, [&](int i, int j) { // a little off the patch's grid: not a copy
+        return Vec3((first + 1 + i + 0.1) / n, (first + 1 + j + 0.05) / n, height);
+    });
     return m;
 }
 
@@ -580,6 +588,44 @@ TEST(FoldRemoval, APieceInAHoleClosesIt) {
         EXPECT_EQ(s.boundary_edges, 4u * n + (joins ? 0u : 24u + 16u)) << height;
         EXPECT_EQ(genera(s), (std::vector<long>(s.components.size(), 0))) << height;
     }
+}
+
+// D-58: a scrap lying over a piece in a hole (the noise of the 1M graded triple torus stacks
+// them so) takes none of the piece's points: the hole closes under the piece, every point goes
+// into the fill, and the scrap then joins the fill too, one piece. Were the scrap's faces open
+// to the piece's points, the scrap would grow by them and stand beside the fill.
+TEST(FoldRemoval, AScrapOverAPieceInAHoleJoinsTheFill) {
+    constexpr int n = 24;
+    TestMesh m = patch_with_piece_in_hole(n, 8, 14, 0.002);
+    add_piece(m,
+              {{9.3 / n, 9.4 / n, 0.006}, {12.8 / n, 9.6 / n, 0.006}, {11.0 / n, 12.7 / n, 0.006}},
+              {{0, 1, 2}});
+    std::vector<Triangle> triangles;
+    const FoldRemoval r = removed_facing_up(m, triangles);
+    const MeshStats s = kept_and_clean(m, r, triangles);
+    EXPECT_EQ(r.stats.piece_holes_closed, 1u);
+    EXPECT_EQ(r.stats.pieces_absorbed, 2u);
+    EXPECT_EQ(r.stats.points_absorbed, 25u + 3u);
+    EXPECT_EQ(s.components.size(), 1u);
+    EXPECT_EQ(s.boundary_edges, 4u * n);
+    EXPECT_EQ(genera(s), std::vector<long>{0});
+}
+
+// D-58: where no surface is under a scrap, it may still join another small piece it lies on
+// (scraps of noise become one): a triangle just over a 4 × 4 grid of points far above the patch
+// goes into the grid's faces; the grid stays where it is.
+TEST(FoldRemoval, AScrapOnlyOverAnotherJoinsIt) {
+    TestMesh m = testing::square_patch(8);
+    constexpr int side = 4;
+    add_grid_piece(m, side, [](int i, int j) { return Vec3(0.3 + i / 8.0, 0.3 + j / 8.0, 1.0); });
+    add_piece(m, {{0.36, 0.35, 1.004}, {0.52, 0.37, 1.004}, {0.44, 0.51, 1.004}}, {{0, 1, 2}});
+    std::vector<Triangle> triangles;
+    const FoldRemoval r = removed_facing_up(m, triangles);
+    const MeshStats s = kept_and_clean(m, r, triangles);
+    EXPECT_EQ(r.stats.pieces_absorbed, 1u);
+    EXPECT_EQ(r.stats.points_absorbed, 3u);
+    EXPECT_EQ(s.components.size(), 2u);
+    EXPECT_EQ(s.boundary_edges, 4u * 8 + 4u * (side - 1));
 }
 
 // D-56 keeps a hole in the data with a scrap in it (D-30): 3 × 3 points in a hole of 6 × 6
@@ -604,21 +650,10 @@ TEST(FoldRemoval, APieceInABowlLeavesItsRimOpen) {
         return 0.5 * ((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5));
     };
     TestMesh m = testing::height_patch(8, bowl);
-    std::vector<Vec3> corners;
-    std::vector<Triangle> faces;
-    constexpr int side = 7;
-    for (int j = 0; j < side; ++j)
-        for (int i = 0; i < side; ++i) {
-            const double x = (i + 1.1) / 8, y = (j + 1.05) / 8;
-            corners.emplace_back(x, y, bowl(x, y) + 0.004);
-        }
-    for (int j = 0; j + 1 < side; ++j)
-        for (int i = 0; i + 1 < side; ++i) {
-            const auto a = std::uint32_t(j * side + i);
-            faces.push_back({a, a + 1, a + side + 1});
-            faces.push_back({a, a + side + 1, a + side});
-        }
-    add_piece(m, corners, faces);
+    add_grid_piece(m, 7, [&](int i, int j) {
+        const double x = (i + 1.1) / 8, y = (j + 1.05) / 8;
+        return Vec3(x, y, bowl(x, y) + 0.004);
+    });
     std::vector<Triangle> triangles;
     const FoldRemoval r = removed_facing_up(m, triangles);
     const MeshStats s = kept_and_clean(m, r, triangles);

@@ -297,17 +297,16 @@ private:
     // the largest, whose every point goes back over a face of another piece near it (put_back's
     // rules) once its faces are gone, joins that surface so; else it stays as it was. D-56
     // first: a piece of at most kMaxPieceInHoleFaces faces lying in a short border loop of
-    // another piece joins it by closing the loop, its points going into the fill. Pieces in
-    // the order of their smallest vertex.
+    // another piece joins it by closing the loop, its points going into the fill. Pieces
+    // largest first; their points go over the faces of another small piece not joined yet
+    // only where nothing else takes them (D-58).
     void absorb_small_pieces(FoldRemovalStats& stats);
 
-    enum class Absorbed { kYes, kNo, kLosingAFew };
     // One piece's faces out and its points over faces near them, or the piece stands again;
     // `close_holes_around`: the short border loops around it closed first (D-56), and up to
-    // an eighth of its points may stay out if `may_lose` (else kLosingAFew says that so few
-    // did).
-    Absorbed absorb_piece(const std::vector<std::uint32_t>& piece, bool close_holes_around,
-                          FoldRemovalStats& stats, bool may_lose = false);
+    // an eighth of its points may stay out.
+    bool absorb_piece(const std::vector<std::uint32_t>& piece, bool close_holes_around,
+                      FoldRemovalStats& stats);
 
     // D-56: the border loops of at most kMaxOptimisedHole edges near the piece (its faces
     // already out) that surround the piece's centre, closed as D-38 closes a gap; false if
@@ -391,6 +390,11 @@ private:
     void add_corner_fill(std::uint32_t f, int k, std::uint32_t v, std::vector<Split>& splits) const;
 
     // v may go over face f: f faces v's normal and v is not a spike over it.
+    // Whether f is a face of a small piece D-55/D-56 has not joined yet, while such faces take
+    // no point (D-58).
+    bool of_a_small_piece(std::uint32_t f) const {
+        return !scraps_take_points_ && f < in_small_piece_.size() && in_small_piece_[f] != 0;
+    }
     bool goes_over(std::uint32_t v, std::uint32_t f) const;
 
     // v is at most half face f's longest side off its plane (not a spike).
@@ -533,6 +537,9 @@ private:
     const VertexCorners at_;     ///< the given faces around each vertex
     std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> added_at_;
     std::vector<std::uint8_t> alive_;
+    ///< per face, while D-55/D-56 run: of a small piece not joined yet (D-58)
+    std::vector<std::uint8_t> in_small_piece_;
+    bool scraps_take_points_ = true;         ///< whether those faces take other pieces' points
     std::vector<std::uint8_t> touched_;      ///< per vertex: a corner of a face cut or added
     std::vector<std::uint8_t> given_border_; ///< per vertex: on the given mesh's border (lazy)
     const std::vector<TrianglePair>& pairs_;

@@ -113,24 +113,38 @@ bool Remover::point_has_standing_face(std::uint32_t v) const {
 }
 
 void Remover::absorb_small_pieces(FoldRemovalStats& stats) {
-    for (const std::vector<std::uint32_t>& piece : small_pieces(kMaxPieceInHoleFaces)) {
+    // Largest first: a scrap beside a piece in a hole can go over the fill that piece makes.
+    std::vector<std::vector<std::uint32_t>> pieces = small_pieces(kMaxPieceInHoleFaces);
+    std::stable_sort(pieces.begin(), pieces.end(),
+                     [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    in_small_piece_.assign(triangles_.size(), 0);
+    const auto mark = [&](const std::vector<std::uint32_t>& piece, std::uint8_t in) {
+        for (std::uint32_t f : piece) in_small_piece_[f] = in;
+    };
+    for (const std::vector<std::uint32_t>& piece : pieces) mark(piece, 1);
+    for (const std::vector<std::uint32_t>& piece : pieces) {
         // A piece that took points of one before it is no longer the faces it was: it stays.
         if (!std::all_of(piece.begin(), piece.end(), [&](std::uint32_t f) { return alive_[f]; }))
             continue;
-        // In a hole, the hole closes under it (D-56) rather than its points lengthening the
-        // hole's border (D-41); a closing that leaves a few points out only where D-55 cannot
-        // place them all either.
-        const Absorbed in_hole = absorb_piece(piece, true, stats);
-        if (in_hole == Absorbed::kYes || (piece.size() <= kMaxAbsorbedPieceFaces &&
-                                          absorb_piece(piece, false, stats) == Absorbed::kYes))
-            continue;
-        if (in_hole == Absorbed::kLosingAFew) absorb_piece(piece, true, stats, true);
+        mark(piece, 0);
+        // In a hole, the hole closes under it (D-56), even leaving a few of its points out,
+        // rather than its points lengthening the hole's border (D-41); else its points go over
+        // the surface near them (D-55), and only where that fails over another small piece
+        // (scraps of noise become one).
+        scraps_take_points_ = false;
+        bool absorbed =
+            absorb_piece(piece, true, stats) ||
+            (piece.size() <= kMaxAbsorbedPieceFaces && absorb_piece(piece, false, stats));
+        scraps_take_points_ = true;
+        absorbed = absorbed ||
+                   (piece.size() <= kMaxAbsorbedPieceFaces && absorb_piece(piece, false, stats));
+        if (!absorbed) mark(piece, 1);
     }
+    in_small_piece_.clear();
 }
 
-Remover::Absorbed Remover::absorb_piece(const std::vector<std::uint32_t>& piece,
-                                        bool close_holes_around, FoldRemovalStats& stats,
-                                        bool may_lose) {
+bool Remover::absorb_piece(const std::vector<std::uint32_t>& piece, bool close_holes_around,
+                           FoldRemovalStats& stats) {
     const Undo undo = begin_undo();
     std::vector<std::uint32_t> points;
     for (std::uint32_t f : piece) {
@@ -158,7 +172,6 @@ Remover::Absorbed Remover::absorb_piece(const std::vector<std::uint32_t>& piece,
         return back;
     };
     std::size_t lost = 0;
-    bool losing_a_few = false;
     if (!close_holes_around) {
         for (std::size_t i = 0; i < points.size() && absorbed; ++i) absorbed = place(points[i]);
     } else if (absorbed) {
@@ -174,11 +187,11 @@ Remover::Absorbed Remover::absorb_piece(const std::vector<std::uint32_t>& piece,
         // Only the piece's own points may stay out: a point of the surface that a closing's fan
         // took out goes back, or the closing is not worth it (D-38).
         lost = out.size();
-        const bool only_the_piece = std::all_of(out.begin(), out.end(), [&](std::uint32_t v) {
-            return std::binary_search(points.begin(), points.end(), v);
-        });
-        losing_a_few = lost > 0 && only_the_piece && lost <= points.size() / kMaxLostInHole;
-        absorbed = lost == 0 || (losing_a_few && may_lose);
+        absorbed = std::all_of(out.begin(), out.end(),
+                               [&](std::uint32_t v) {
+                                   return std::binary_search(points.begin(), points.end(), v);
+                               }) &&
+                   lost <= points.size() / kMaxLostInHole;
     }
     if (absorbed) {
         ++stats.pieces_absorbed;
@@ -187,8 +200,7 @@ Remover::Absorbed Remover::absorb_piece(const std::vector<std::uint32_t>& piece,
         stats.piece_holes_closed += close_holes_around;
     }
     end_undo(undo, absorbed);
-    if (absorbed) return Absorbed::kYes;
-    return losing_a_few ? Absorbed::kLosingAFew : Absorbed::kNo;
+    return absorbed;
 }
 
 bool Remover::close_holes_under(const std::vector<std::uint32_t>& piece,
@@ -204,7 +216,8 @@ bool Remover::close_holes_under(const std::vector<std::uint32_t>& piece,
     gather_standing(Box{box.lo - Vec3(edge, edge, edge), box.hi + Vec3(edge, edge, edge)});
     std::vector<std::uint32_t> starts;
     for (const auto& [f, b] : near_.found())
-        for (std::uint32_t v : triangles_[f]) starts.push_back(v);
+        if (!of_a_small_piece(f))
+            for (std::uint32_t v : triangles_[f]) starts.push_back(v);
     std::sort(starts.begin(), starts.end());
     starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
     // One walk per border loop (each walk gives its outcome to the vertices it passes).

@@ -139,7 +139,7 @@ std::vector<Remover::Split> Remover::splits_near(std::uint32_t v) {
     std::vector<Split> splits;
     for (std::uint32_t f : faces) {
         // Every split below goes over f: none is taken where f is not (put_back's test).
-        if (!goes_over(v, f)) continue;
+        if (!goes_over(v, f) || of_a_small_piece(f)) continue;
         const Triangle t = triangles_[f];
         const std::array<Triangle, 3> three = split_around(t, v);
         splits.push_back({{f}, {three.begin(), three.end()}, {f, f, f}});
