@@ -41,8 +41,8 @@ CLI::App* add_reconstruct_command(CLI::App& app, ReconstructArguments& a) {
     add_preprocess_options(*c, a.options.rsr.preprocess);
     c->add_option("--n", a.options.rsr.min_handle_loop,
                   "Shortest loop around a handle that is kept, in point spacings of the input;\n"
-                  "shorter gaps are slits, not handles (HRsR closes them on otherwise closed\n"
-                  "pieces)")
+                  "shorter gaps are slits, not handles (both methods close them on otherwise\n"
+                  "closed pieces)")
         ->capture_default_str();
     c->add_option("--handles", a.options.rsr.handles,
                   "Handles: -1 = as many as found, 0 = none (genus 0), g = at most g")

@@ -55,7 +55,8 @@ std::vector<Doc> docs() {
         {"n", "n (shortest handle)", "point spacings", num(d.rsr.min_handle_loop),
          "Topology: a tunnel or handle is kept when the loop around it is at least n point "
          "spacings long; shorter gaps are taken for slits or noise: no handle across them, "
-         "and HRsR closes them where they are the only holes of an otherwise closed surface. "
+         "and both methods close them where they are the only holes of an otherwise closed "
+         "surface. "
          "The same value works at every density and collapse ratio.",
          true},
         {"distance", "Distance", "choice",

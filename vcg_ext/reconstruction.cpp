@@ -180,13 +180,19 @@ std::size_t append_points_in_no_triangle(const PreparedCloud& cloud,
 
 // The fold repair on the finished mesh, on the coordinates as written: one search for the
 // intersecting pairs, D-26's flips, then D-32 cuts out what they left, so that the written mesh
-// has no intersecting pair. rounds = 0 turns both off. D-45 closes the loops of at most
-// `pinhole_edges` of pieces closed but for them (kMaxFilledLoop: none). The cloud is released
+// has no intersecting pair. `fold_repair_rounds` = 0 turns both off. The cloud is released
 // before the search: the fold removal is the run's peak of memory (issue 20 item 5).
-void repair_and_remove_folds(const PointSet& input, PreparedCloud cloud, int rounds,
-                             std::size_t pinhole_edges, const Execution& exec, Reconstruction& mesh,
+void repair_and_remove_folds(const PointSet& input, PreparedCloud cloud, const RsrOptions& options,
+                             const Execution& exec, Reconstruction& mesh,
                              ReconstructionReport& report) {
+    const int rounds = options.fold_repair_rounds;
     if (rounds <= 0 || mesh.triangles.size() < 2) return;
+    // D-45, D-59 (both methods): the loops of a piece closed but for loops no longer than a
+    // handle must be to stay (D-27's hop limit on the input cloud) are pinholes: of the coarse
+    // sampling that the re-expansion widened beyond D-28's fans (HRsR), or of the noise where
+    // D-38's fills cross (RsR).
+    const std::size_t pinhole_edges = std::max(
+        kMaxFilledLoop, rsr::handle_hop_limit(options.min_handle_loop, cloud.size(), cloud.size()));
     if (exec.progress) exec.progress->begin("fold repair");
     const std::size_t given = append_points_in_no_triangle(cloud, report, mesh);
     cloud = PreparedCloud();
@@ -483,8 +489,7 @@ Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const E
     assembly.reset();
     const Normalisation normalisation = cloud.normalisation;
     const std::vector<InputIndex> turned = std::move(cloud.turned_normals); // cloud goes next
-    repair_and_remove_folds(input, std::move(cloud), options.fold_repair_rounds, kMaxFilledLoop,
-                            exec, mesh, report);
+    repair_and_remove_folds(input, std::move(cloud), options, exec, mesh, report);
     clear_flat_output_faces(input, mesh, exec, report);
     write_turned_normals_as_given(turned, mesh);
     restore_input_normals(input, report.preprocess, mesh);
@@ -572,16 +577,9 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
     fine = ReexpandedMesh();
     root = IndexVector<PointIndex, PointIndex>();
     assembly.reset();
-    // D-45: the loops of a piece closed but for loops no longer than a handle must be to stay
-    // (D-27's hop limit on the input cloud) are pinholes of the coarse sampling that the
-    // re-expansion widened into slits beyond D-28's fans.
-    const std::size_t pinhole_edges =
-        std::max(kMaxFilledLoop,
-                 rsr::handle_hop_limit(options.rsr.min_handle_loop, cloud.size(), cloud.size()));
     const Normalisation normalisation = cloud.normalisation;
     const std::vector<InputIndex> turned = std::move(cloud.turned_normals); // cloud goes next
-    repair_and_remove_folds(input, std::move(cloud), options.rsr.fold_repair_rounds, pinhole_edges,
-                            exec, mesh, report);
+    repair_and_remove_folds(input, std::move(cloud), options.rsr, exec, mesh, report);
     clear_flat_output_faces(input, mesh, exec, report);
     write_turned_normals_as_given(turned, mesh);
     return {std::move(mesh), normalisation};

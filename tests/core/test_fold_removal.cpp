@@ -421,14 +421,13 @@ TEST(FoldRemoval, APinchedBubbleJoinsWithoutItsCopy) {
     EXPECT_EQ(s.faces, 128u + 2u * 3u);
 }
 
-// D-55: a piece that points of an earlier one joined (here a scrap beside a quad's border, both
-// half a unit above the patch) is not the piece it was: it stays as it stands, and nothing
-// reaches the patch.
+// D-55: a piece that points of an earlier one joined (here a scrap beside another triangle's
+// border, both half a unit above the patch; as large, they go in the order of their points) is
+// not the piece it was: it stays as it stands, and nothing reaches the patch.
 TEST(FoldRemoval, APieceThatTookPointsStays) {
     TestMesh m = testing::square_patch(8);
     add_piece(m, {{0.46, 0.26, 0.5}, {0.52, 0.30, 0.5}, {0.46, 0.34, 0.5}}, {{0, 1, 2}});
-    add_piece(m, {{0.2, 0.2, 0.5}, {0.4, 0.2, 0.5}, {0.4, 0.4, 0.5}, {0.2, 0.4, 0.5}},
-              {{0, 1, 2}, {0, 2, 3}});
+    add_piece(m, {{0.2, 0.2, 0.5}, {0.4, 0.2, 0.5}, {0.4, 0.4, 0.5}}, {{0, 1, 2}});
     std::vector<Triangle> triangles;
     const FoldRemoval r = removed_facing_up(m, triangles);
     const MeshStats s = kept_and_clean(m, r, triangles);
@@ -445,7 +444,7 @@ TEST(FoldRemoval, APieceThatTookPointsStays) {
     }
 }
 
-// D-45 (HRsR): a piece closed but for loops of at most `pinhole_edges` edges is
+// D-45 (D-59: both methods): a piece closed but for loops of at most `pinhole_edges` edges is
 // closed, every vertex kept; a patch whose outer border is longer keeps its 8-edge inner hole
 // too, and a tent with more border than interior vertices (8 against 1) keeps its border.
 TEST(FoldRemoval, PinholesOfAClosedPieceCloseOtherBordersStay) {
@@ -555,18 +554,27 @@ TEST(FoldRemoval, GapsOfUpToSixEdgesClose) {
 }
 
 // A patch of n × n cells (spacing 1/n) with the square hole where x and y are between the given
-// cell numbers (its border corners kept), and a grid piece of `side` × `side` points inside it
-// a spacing clear of its border (by default as large as that leaves) at `height` above the
-// patch.
-TestMesh patch_with_piece_in_hole(int n, int first, int last, double height, int side = 0) {
-    TestMesh m = without_faces(testing::square_patch(n), [&](const Vec3& p) {
+// cell numbers (its border corners kept).
+TestMesh patch_with_hole(int n, int first, int last) {
+    return without_faces(testing::square_patch(n), [&](const Vec3& p) {
         return p[0] > (first - 0.5) / n && p[0] < (last + 0.5) / n && p[1] > (first - 0.5) / n &&
                p[1] < (last + 0.5) / n;
     });
+}
+
+// A grid piece of `side` × `side` points inside patch_with_hole(n, first, last)'s hole, a
+// spacing clear of its border (by default as large as that leaves), at `height` above the patch.
+void add_piece_in_hole(TestMesh& m, int n, int first, int last, double height, int side = 0) {
     if (side == 0) side = last - first - 1;
     add_grid_piece(m, side, [&](int i, int j) { // a little off the patch's grid: not a copy
         return Vec3((first + 1 + i + 0.1) / n, (first + 1 + j + 0.05) / n, height);
     });
+}
+
+// patch_with_hole() with add_piece_in_hole().
+TestMesh patch_with_piece_in_hole(int n, int first, int last, double height, int side = 0) {
+    TestMesh m = patch_with_hole(n, first, last);
+    add_piece_in_hole(m, n, first, last, height, side);
     return m;
 }
 
@@ -591,24 +599,30 @@ TEST(FoldRemoval, APieceInAHoleClosesIt) {
 }
 
 // D-58: a scrap lying over a piece in a hole (the noise of the 1M graded triple torus stacks
-// them so) takes none of the piece's points: the hole closes under the piece, every point goes
-// into the fill, and the scrap then joins the fill too, one piece. Were the scrap's faces open
-// to the piece's points, the scrap would grow by them and stand beside the fill.
+// them so), its points numbered before the piece's, takes none of the piece's points, and the
+// piece goes first: the hole closes under the piece, every point goes into the fill, and the
+// scrap then joins the fill too, one piece. Were the large scrap's faces open to the piece's
+// points, it would grow by them and stand beside the fill; were the small scrap (too far from the
+// hole's border to join it) tried first, it would join the piece and the piece would stand.
 TEST(FoldRemoval, AScrapOverAPieceInAHoleJoinsTheFill) {
     constexpr int n = 24;
-    TestMesh m = patch_with_piece_in_hole(n, 8, 14, 0.002);
-    add_piece(m,
-              {{9.3 / n, 9.4 / n, 0.006}, {12.8 / n, 9.6 / n, 0.006}, {11.0 / n, 12.7 / n, 0.006}},
-              {{0, 1, 2}});
-    std::vector<Triangle> triangles;
-    const FoldRemoval r = removed_facing_up(m, triangles);
-    const MeshStats s = kept_and_clean(m, r, triangles);
-    EXPECT_EQ(r.stats.piece_holes_closed, 1u);
-    EXPECT_EQ(r.stats.pieces_absorbed, 2u);
-    EXPECT_EQ(r.stats.points_absorbed, 25u + 3u);
-    EXPECT_EQ(s.components.size(), 1u);
-    EXPECT_EQ(s.boundary_edges, 4u * n);
-    EXPECT_EQ(genera(s), std::vector<long>{0});
+    const std::vector<std::vector<Vec3>> scraps{
+        {{9.3 / n, 9.4 / n, 0.006}, {12.8 / n, 9.6 / n, 0.006}, {11.0 / n, 12.7 / n, 0.006}},
+        {{10.6 / n, 10.6 / n, 0.006}, {11.4 / n, 10.7 / n, 0.006}, {11.0 / n, 11.4 / n, 0.006}}};
+    for (const std::vector<Vec3>& scrap : scraps) {
+        TestMesh m = patch_with_hole(n, 8, 14);
+        add_piece(m, scrap, {{0, 1, 2}});
+        add_piece_in_hole(m, n, 8, 14, 0.002);
+        std::vector<Triangle> triangles;
+        const FoldRemoval r = removed_facing_up(m, triangles);
+        const MeshStats s = kept_and_clean(m, r, triangles);
+        EXPECT_EQ(r.stats.piece_holes_closed, 1u) << scrap[0][0];
+        EXPECT_EQ(r.stats.pieces_absorbed, 2u) << scrap[0][0];
+        EXPECT_EQ(r.stats.points_absorbed, 25u + 3u) << scrap[0][0];
+        EXPECT_EQ(s.components.size(), 1u) << scrap[0][0];
+        EXPECT_EQ(s.boundary_edges, 4u * n) << scrap[0][0];
+        EXPECT_EQ(genera(s), std::vector<long>{0}) << scrap[0][0];
+    }
 }
 
 // D-58: where no surface is under a scrap, it may still join another small piece it lies on

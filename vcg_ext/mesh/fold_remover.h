@@ -308,6 +308,13 @@ private:
     bool absorb_piece(const std::vector<std::uint32_t>& piece, bool close_holes_around,
                       FoldRemovalStats& stats);
 
+    // D-58: whether some face ever at v (standing or not) is marked as a small piece's.
+    bool ever_in_a_small_piece(std::uint32_t v) const;
+
+    // D-58: after a piece joined another small piece, the faces it made there marked as that
+    // piece's (in_small_piece_ sized to every face made since).
+    void mark_faces_made_on_small_pieces();
+
     // D-56: the border loops of at most kMaxOptimisedHole edges near the piece (its faces
     // already out) that surround the piece's centre, closed as D-38 closes a gap; false if
     // there is none, if the piece has fewer than kMinHoleFill of the points a surface over one
@@ -389,12 +396,13 @@ private:
     // still be pinched between D-32's cuts).
     void add_corner_fill(std::uint32_t f, int k, std::uint32_t v, std::vector<Split>& splits) const;
 
-    // v may go over face f: f faces v's normal and v is not a spike over it.
     // Whether f is a face of a small piece D-55/D-56 has not joined yet, while such faces take
     // no point (D-58).
     bool of_a_small_piece(std::uint32_t f) const {
         return !scraps_take_points_ && f < in_small_piece_.size() && in_small_piece_[f] != 0;
     }
+
+    // v may go over face f: f faces v's normal and v is not a spike over it.
     bool goes_over(std::uint32_t v, std::uint32_t f) const;
 
     // v is at most half face f's longest side off its plane (not a spike).
@@ -537,7 +545,7 @@ private:
     const VertexCorners at_;     ///< the given faces around each vertex
     std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> added_at_;
     std::vector<std::uint8_t> alive_;
-    ///< per face, while D-55/D-56 run: of a small piece not joined yet (D-58)
+    /// Per face, while D-55/D-56 run: of a small piece not joined yet (D-58).
     std::vector<std::uint8_t> in_small_piece_;
     bool scraps_take_points_ = true;         ///< whether those faces take other pieces' points
     std::vector<std::uint8_t> touched_;      ///< per vertex: a corner of a face cut or added

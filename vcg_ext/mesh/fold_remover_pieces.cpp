@@ -136,11 +136,38 @@ void Remover::absorb_small_pieces(FoldRemovalStats& stats) {
             absorb_piece(piece, true, stats) ||
             (piece.size() <= kMaxAbsorbedPieceFaces && absorb_piece(piece, false, stats));
         scraps_take_points_ = true;
-        absorbed = absorbed ||
-                   (piece.size() <= kMaxAbsorbedPieceFaces && absorb_piece(piece, false, stats));
+        if (!absorbed && piece.size() <= kMaxAbsorbedPieceFaces &&
+            absorb_piece(piece, false, stats)) {
+            absorbed = true;
+            mark_faces_made_on_small_pieces();
+        }
         if (!absorbed) mark(piece, 1);
     }
     in_small_piece_.clear();
+}
+
+bool Remover::ever_in_a_small_piece(std::uint32_t v) const {
+    const auto marked = [&](std::uint32_t f) {
+        return f < in_small_piece_.size() && in_small_piece_[f] != 0;
+    };
+    for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
+        if (marked(at_.corner[e] / 3)) return true;
+    const auto it = added_at_.find(v);
+    return it != added_at_.end() && std::any_of(it->second.begin(), it->second.end(), marked);
+}
+
+void Remover::mark_faces_made_on_small_pieces() {
+    // The faces made since the marks were last sized: those at another small piece's vertices
+    // are that piece's (a split of one of its faces, or an ear on its border); the rest lie on
+    // the surface. The placed piece's own faces were unmarked before it was tried.
+    const std::size_t marked_before = in_small_piece_.size();
+    std::vector<std::uint32_t> on_small;
+    for (std::size_t f = marked_before; f < triangles_.size(); ++f)
+        if (alive_[f] && std::any_of(triangles_[f].begin(), triangles_[f].end(),
+                                     [&](std::uint32_t c) { return ever_in_a_small_piece(c); }))
+            on_small.push_back(std::uint32_t(f));
+    in_small_piece_.resize(triangles_.size(), 0);
+    for (std::uint32_t f : on_small) in_small_piece_[f] = 1;
 }
 
 bool Remover::absorb_piece(const std::vector<std::uint32_t>& piece, bool close_holes_around,
