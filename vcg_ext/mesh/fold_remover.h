@@ -398,8 +398,11 @@ private:
 
     // Whether f is a face of a small piece D-55/D-56 has not joined yet, while such faces take
     // no point (D-58).
-    bool of_a_small_piece(std::uint32_t f) const {
-        return !scraps_take_points_ && f < in_small_piece_.size() && in_small_piece_[f] != 0;
+    bool of_a_small_piece(std::uint32_t f) const { return !scraps_take_points_ && marked_small(f); }
+
+    // Whether f is marked in in_small_piece_ (faces made after the marks were sized are not).
+    bool marked_small(std::uint32_t f) const {
+        return f < in_small_piece_.size() && in_small_piece_[f] != 0;
     }
 
     // v may go over face f: f faces v's normal and v is not a spike over it.

@@ -131,13 +131,12 @@ void Remover::absorb_small_pieces(FoldRemovalStats& stats) {
         // rather than its points lengthening the hole's border (D-41); else its points go over
         // the surface near them (D-55), and only where that fails over another small piece
         // (scraps of noise become one).
+        const bool small_enough_to_place = piece.size() <= kMaxAbsorbedPieceFaces;
         scraps_take_points_ = false;
-        bool absorbed =
-            absorb_piece(piece, true, stats) ||
-            (piece.size() <= kMaxAbsorbedPieceFaces && absorb_piece(piece, false, stats));
+        bool absorbed = absorb_piece(piece, true, stats) ||
+                        (small_enough_to_place && absorb_piece(piece, false, stats));
         scraps_take_points_ = true;
-        if (!absorbed && piece.size() <= kMaxAbsorbedPieceFaces &&
-            absorb_piece(piece, false, stats)) {
+        if (!absorbed && small_enough_to_place && absorb_piece(piece, false, stats)) {
             absorbed = true;
             mark_faces_made_on_small_pieces();
         }
@@ -147,9 +146,7 @@ void Remover::absorb_small_pieces(FoldRemovalStats& stats) {
 }
 
 bool Remover::ever_in_a_small_piece(std::uint32_t v) const {
-    const auto marked = [&](std::uint32_t f) {
-        return f < in_small_piece_.size() && in_small_piece_[f] != 0;
-    };
+    const auto marked = [&](std::uint32_t f) { return marked_small(f); };
     for (std::uint32_t e = at_.begin(v); e < at_.end(v); ++e)
         if (marked(at_.corner[e] / 3)) return true;
     const auto it = added_at_.find(v);
