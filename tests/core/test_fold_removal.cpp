@@ -229,8 +229,8 @@ Placed expect_placed(const TestMesh& m, const std::vector<Vec3>& normals,
 
 // D-37: vertices given without a face (points in no triangle) go into a face near them as D-32's
 // put-back places what it took out: here one just above a flat patch's face goes in, one high
-// above it (a spike: 0.8 spacings) and one whose normal faces away (the other side of a sheet) stay
-// out, and nothing else changes.
+// above it (a spike: 0.8 spacings) and one whose normal faces away a quarter spacing above it
+// (the other side of a sheet) stay out, and nothing else changes.
 TEST(FoldRemoval, PointsInNoTriangleArePlacedIntoAFaceWhereTheyFit) {
     TestMesh m = testing::square_patch(8);
     const std::size_t patch_vertices = m.positions.size();
@@ -239,7 +239,7 @@ TEST(FoldRemoval, PointsInNoTriangleArePlacedIntoAFaceWhereTheyFit) {
     normals.emplace_back(0, 0, 1);
     m.positions.emplace_back(0.65, 0.30, 0.10); // over half the longest side up: stays out
     normals.emplace_back(0, 0, 1);
-    m.positions.emplace_back(0.30, 0.70, 0.01); // facing away: stays out
+    m.positions.emplace_back(0.30, 0.70, 0.03); // facing away, 0.17 longest sides up: stays out
     normals.emplace_back(0, 0, -1);
     const Placed p = expect_placed(m, normals, patch_vertices, 1, 2); // a face split in three
     EXPECT_EQ(p.vertex_source.back(), patch_vertices);                // the first extra point
@@ -258,6 +258,22 @@ TEST(FoldRemoval, APointGoesInWhereTheNormalsAroundItsFaceAreTurned) {
     m.positions.emplace_back(0.40, 0.33, 0.01); // over that cell's upper triangle
     normals.emplace_back(0, 0, 1);
     const Placed p = expect_placed(m, normals, patch_vertices, 1, 2);
+    EXPECT_EQ(p.mesh.boundary_edges, 32u);
+}
+
+// D-60: a point whose normal is against every face near it (a clump of flipped normals) but
+// which lies flat on one (here 0.06 of its longest side up) goes in once nothing else is left to
+// do; a point so turned 0.17 longest sides up stays out (D-41: the other side of a sheet).
+TEST(FoldRemoval, APointLyingFlatOnAFaceGoesInWhateverItsNormal) {
+    TestMesh m = testing::square_patch(8);
+    const std::size_t patch_vertices = m.positions.size();
+    std::vector<Vec3> normals(patch_vertices, Vec3(0, 0, 1));
+    m.positions.emplace_back(0.30, 0.70, 0.01);
+    normals.emplace_back(0.3, 0, -1);
+    m.positions.emplace_back(0.65, 0.55, 0.03);
+    normals.emplace_back(0, 0, -1);
+    const Placed p = expect_placed(m, normals, patch_vertices, 1, 2);
+    EXPECT_EQ(p.vertex_source.back(), patch_vertices);
     EXPECT_EQ(p.mesh.boundary_edges, 32u);
 }
 
@@ -388,6 +404,28 @@ TEST(FoldRemoval, SmallPiecesOnASurfaceJoinIt) {
     std::size_t largest = 0;
     for (const ComponentTopology& c : s.components) largest = std::max(largest, c.faces);
     EXPECT_EQ(largest, 128u + 2u * 7u);
+}
+
+// D-60 comes last: a scrap lying on the surface (a triangle 0.17 longest sides above a patch)
+// joins it (D-55) although a point turned against both lies flat on the scrap; had the point
+// gone into the scrap first, the scrap would no longer be the piece it was, and would stay.
+TEST(FoldRemoval, APointTurnedAgainstTheSurfaceKeepsNoScrapOut) {
+    TestMesh m = testing::square_patch(8);
+    add_piece(m, {{0.40, 0.40, 0.03}, {0.56, 0.42, 0.03}, {0.46, 0.56, 0.03}}, {{0, 1, 2}});
+    std::vector<Vec3> normals(m.positions.size(), Vec3(0, 0, 1));
+    m.positions.emplace_back(0.48, 0.46, 0.031);
+    normals.emplace_back(0, 0, -1);
+    std::vector<Triangle> triangles = m.triangles;
+    const FoldRemoval r = remove_folds(m.positions, normals, triangles, {});
+    EXPECT_EQ(r.stats.pieces_absorbed, 1u);
+    EXPECT_EQ(r.stats.points_absorbed, 3u);
+    std::vector<Vec3> positions;
+    for (std::uint32_t v : r.vertex_source) positions.push_back(m.positions[v]);
+    EXPECT_TRUE(self_intersecting_pairs(positions, triangles, {}).empty());
+    const MeshStats s = measure_mesh(positions.size(), triangles);
+    EXPECT_EQ(s.components.size(), 1u);
+    EXPECT_EQ(s.boundary_edges, 32u);
+    EXPECT_EQ(s.non_manifold_edges + s.non_manifold_vertices, 0u);
 }
 
 // D-55: a bubble pinched to the surface at one of its points (a copy of a patch vertex, as §5.8

@@ -36,10 +36,13 @@ void Remover::run(FoldRemovalStats& stats) {
         }
     close_small_cut_holes(stats);
     close_small_holes_left(stats);
-    put_back_the_rest();
+    put_back_the_rest(PutBack::or_turned);
     absorb_small_pieces(stats);
     close_pinholes(stats);
     close_slits(stats);
+    // D-60 last: a point placed on a small piece would keep it from joining the surface (a
+    // piece that took points stays; the RsR lion kept 8 pieces more).
+    put_back_the_rest(PutBack::or_flat_against);
     stats.vertices_reinserted = reinserted_;
     stats.points_placed = placed_;
     stats.points_joined_border = joined_border_;

@@ -349,6 +349,13 @@ private:
     // ----------------------------------------------------------------------------------------
     // Vertices put back into faces near them: D-37, D-41 (fold_remover_put_back.cpp).
 
+    // The ways a point may go back over a face near it, each allowing those before it.
+    enum class PutBack {
+        facing,          ///< splits facing their corners' normals, over faces facing its normal
+        or_turned,       ///< or splits that only turn as the faces they replace (D-55, D-57)
+        or_flat_against, ///< or over a face against its normal that it lies flat on (D-60)
+    };
+
     // Puts removed vertices back where they fit into a face around the hole's `corners` (the
     // fill's, or one next to it): a face split into three around the vertex, proper triangles
     // facing their normals that cross no standing face, the split with the largest smallest
@@ -365,8 +372,9 @@ private:
     // D-37: vertices that never had a face (points in no triangle, given as such) go the same
     // way, within a grid cell of where they are.
     // D-57: in rounds while one places a point; where no facing split fits, one whose triangles
-    // only turn as the face they replace does.
-    void put_back_the_rest();
+    // only turn as the face they replace does (`how`: PutBack::or_turned, or
+    // PutBack::or_flat_against once every other step is done, D-60).
+    void put_back_the_rest(PutBack how);
 
     bool never_had_a_face(std::uint32_t v) const;
 
@@ -387,7 +395,7 @@ private:
     // The standing face across f's edge k (from corner k to k + 1), or none.
     std::optional<std::uint32_t> across(std::uint32_t f, int k) const;
 
-    std::vector<Split> splits_near(std::uint32_t v);
+    std::vector<Split> splits_near(std::uint32_t v, PutBack how);
 
     // v beyond the border at b, between the border edges a → b (of face f) and b → c: the
     // triangles (b, a, v) and (c, b, v) close b's corner, and the border runs a → v → c, as long
@@ -405,23 +413,23 @@ private:
         return f < in_small_piece_.size() && in_small_piece_[f] != 0;
     }
 
-    // v may go over face f: f faces v's normal and v is not a spike over it.
-    bool goes_over(std::uint32_t v, std::uint32_t f) const;
+    // v may go over face f: f faces v's normal (or, if `how` allows it, v lies flat on f: D-60)
+    // and v is not a spike over it.
+    bool goes_over(std::uint32_t v, std::uint32_t f, PutBack how) const;
 
-    // v is at most half face f's longest side off its plane (not a spike).
-    bool low_over(std::uint32_t v, std::uint32_t f) const;
+    // v is at most `sides` of face f's longest side off its plane.
+    bool within_height(std::uint32_t v, std::uint32_t f, double sides) const;
 
     // D-41: every face v goes over must face v's own normal, not only the sum of the new
     // triangles' corners' normals: two sheets closer than a spacing with opposed normals would
-    // otherwise trade points (a point of one went into a face of the other). With
-    // `or_turned`, where no split facing the corners' normals fits, one whose triangles only turn
-    // as the faces they replace do (D-55, D-57): the splits near v are found once for both.
-    bool put_back(std::uint32_t v, bool or_turned = false);
+    // otherwise trade points (a point of one went into a face of the other). `how` may allow
+    // more where no such split fits (PutBack): the splits near v are found once for all ways.
+    bool put_back(std::uint32_t v, PutBack how = PutBack::facing);
 
     // The best of `splits` (the border lengthened last, then the largest smallest angle) whose
     // triangles are proper (facing their corners' normals if `facing`), turn as the faces they
     // replace do and cross no standing face, made; false if none fits.
-    bool fit_split(std::uint32_t v, const std::vector<Split>& splits, bool facing);
+    bool fit_split(std::uint32_t v, const std::vector<Split>& splits, bool facing, PutBack how);
 
     // intersects_gathered() among the gathered faces that still stand.
     bool intersects_gathered_standing(const Triangle& t) const;

@@ -191,7 +191,7 @@ bool Remover::absorb_piece(const std::vector<std::uint32_t>& piece, bool close_h
         // The noise of the written coordinates may turn the faces there every way: a split
         // that faces away from the corners' normals but turns as the face it replaces does
         // and crosses nothing is kept too (the bubbles of the 1M graded triple torus).
-        const bool back = put_back(v, true);
+        const bool back = put_back(v, PutBack::or_turned);
         placed += back && std::binary_search(points.begin(), points.end(), v);
         return back;
     };
