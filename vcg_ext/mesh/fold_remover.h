@@ -216,7 +216,8 @@ private:
     std::vector<std::uint32_t> border_candidates();
 
     // Closes the loop through v of at most `limit` edges, if there is one, as D-38 does; at
-    // most `may_lose` of the vertices it takes out may stay out. Whether it closed.
+    // most `may_lose` of the vertices it takes out may stay out, the others go back as the last
+    // put-back takes them (D-61: a split that turns as its face does counts). Whether it closed.
     bool close_loop_at(std::uint32_t v, std::size_t limit, std::vector<std::uint8_t>& tried,
                        FoldRemovalStats& stats, std::size_t may_lose = 0);
 
@@ -349,11 +350,11 @@ private:
     // ----------------------------------------------------------------------------------------
     // Vertices put back into faces near them: D-37, D-41 (fold_remover_put_back.cpp).
 
-    // The ways a point may go back over a face near it, each allowing those before it.
+    // The ways a point may go back over a face near it: first by a split facing its corners'
+    // normals over faces facing its own normal (D-41), else
     enum class PutBack {
-        facing,          ///< splits facing their corners' normals, over faces facing its normal
-        or_turned,       ///< or splits that only turn as the faces they replace (D-55, D-57)
-        or_flat_against, ///< or over a face against its normal that it lies flat on (D-60)
+        or_turned,       ///< by one that only turns as the faces it replaces (D-55, D-57, D-61)
+        or_flat_against, ///< the same, or over a face against its normal it lies flat on (D-60)
     };
 
     // Puts removed vertices back where they fit into a face around the hole's `corners` (the
@@ -422,9 +423,9 @@ private:
 
     // D-41: every face v goes over must face v's own normal, not only the sum of the new
     // triangles' corners' normals: two sheets closer than a spacing with opposed normals would
-    // otherwise trade points (a point of one went into a face of the other). `how` may allow
-    // more where no such split fits (PutBack): the splits near v are found once for all ways.
-    bool put_back(std::uint32_t v, PutBack how = PutBack::facing);
+    // otherwise trade points (a point of one went into a face of the other). `how` says what
+    // else is allowed where no such split fits: the splits near v are found once for all ways.
+    bool put_back(std::uint32_t v, PutBack how);
 
     // The best of `splits` (the border lengthened last, then the largest smallest angle) whose
     // triangles are proper (facing their corners' normals if `facing`), turn as the faces they

@@ -135,7 +135,7 @@ bool Remover::close_loop(const Hole& hole, std::size_t limit, FoldRemovalStats& 
     if (closed && may_lose == 0) {
         closed = put_back_taken_out();
     } else if (closed) {
-        for (std::uint32_t r : taken_out()) lost += !put_back(r);
+        for (std::uint32_t r : taken_out()) lost += !put_back(r, PutBack::or_turned);
         closed = lost <= may_lose;
     }
     if (closed) stats.vertices_removed += lost;
@@ -248,7 +248,9 @@ Remover::Undo Remover::begin_undo() {
 
 bool Remover::put_back_taken_out() {
     const std::vector<std::uint32_t> out = taken_out();
-    return std::all_of(out.begin(), out.end(), [&](std::uint32_t v) { return put_back(v); });
+    // D-61: as the last put-back takes them, turning as their face where none faces the normals.
+    return std::all_of(out.begin(), out.end(),
+                       [&](std::uint32_t v) { return put_back(v, PutBack::or_turned); });
 }
 
 std::vector<std::uint32_t> Remover::taken_out() const {

@@ -208,8 +208,7 @@ bool Remover::within_height(std::uint32_t v, std::uint32_t f, double sides) cons
 
 bool Remover::put_back(std::uint32_t v, PutBack how) {
     const std::vector<Split> splits = splits_near(v, how);
-    return fit_split(v, splits, true, how) ||
-           (how != PutBack::facing && fit_split(v, splits, false, how));
+    return fit_split(v, splits, true, how) || fit_split(v, splits, false, how);
 }
 
 bool Remover::fit_split(std::uint32_t v, const std::vector<Split>& splits, bool facing,
