@@ -190,7 +190,8 @@ private:
     // D-45: once every other vertex is back, the loops longer than kMaxFilledLoop and no longer
     // than pinhole_edges_ of a piece whose every border loop is so short (as D-39 on the coarse
     // mesh) are closed as D-38 closes a gap, at most a vertex per kMaxFilledLoop edges left out.
-    // Last, so that no vertex the earlier steps placed is kept out by their fills.
+    // After the other closings and D-55, so that no vertex the earlier steps placed is kept out
+    // by their fills (only D-48's slits and D-60's last put-back come after).
     void close_pinholes(FoldRemovalStats& stats);
 
     // D-48: a border loop of up to kMaxOptimisedHole edges whose two sides run closer than
@@ -216,7 +217,7 @@ private:
     std::vector<std::uint32_t> border_candidates();
 
     // Closes the loop through v of at most `limit` edges, if there is one, as D-38 does; at
-    // most `may_lose` of the vertices it takes out may stay out, the others go back as the last
+    // most `may_lose` of the vertices it takes out may stay out, the others go back as D-57's
     // put-back takes them (D-61: a split that turns as its face does counts). Whether it closed.
     bool close_loop_at(std::uint32_t v, std::size_t limit, std::vector<std::uint8_t>& tried,
                        FoldRemovalStats& stats, std::size_t may_lose = 0);
@@ -421,10 +422,10 @@ private:
     // v is at most `sides` of face f's longest side off its plane.
     bool within_height(std::uint32_t v, std::uint32_t f, double sides) const;
 
-    // D-41: every face v goes over must face v's own normal, not only the sum of the new
-    // triangles' corners' normals: two sheets closer than a spacing with opposed normals would
-    // otherwise trade points (a point of one went into a face of the other). `how` says what
-    // else is allowed where no such split fits: the splits near v are found once for all ways.
+    // D-41: every face v goes over must face v's own normal (but in D-60's last pass), not only
+    // the sum of the new triangles' corners' normals: two sheets closer than a spacing with
+    // opposed normals would otherwise trade points (a point of one went into a face of the
+    // other). `how` says what else is allowed where no such split fits.
     bool put_back(std::uint32_t v, PutBack how);
 
     // The best of `splits` (the border lengthened last, then the largest smallest angle) whose

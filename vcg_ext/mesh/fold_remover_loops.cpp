@@ -248,7 +248,7 @@ Remover::Undo Remover::begin_undo() {
 
 bool Remover::put_back_taken_out() {
     const std::vector<std::uint32_t> out = taken_out();
-    // D-61: as the last put-back takes them, turning as their face where none faces the normals.
+    // D-61: as D-57's put-back takes them, turning as their face where none faces the normals.
     return std::all_of(out.begin(), out.end(),
                        [&](std::uint32_t v) { return put_back(v, PutBack::or_turned); });
 }

@@ -79,7 +79,8 @@ void Remover::put_back_the_rest(PutBack how) {
     // kPutBackRounds): a split may leave a face that another point fits into.
     std::vector<std::uint32_t> waiting;
     for (std::uint32_t v = 0; v + 1 < at_.start.size(); ++v)
-        if (representative_[v] == v && (lost_all_faces(v) || never_had_a_face(v)))
+        if (representative_[v] == v && (lost_all_faces(v) || never_had_a_face(v)) &&
+            !point_has_standing_face(v)) // not a copy D-55 left out where another stands
             waiting.push_back(v);
     for (std::size_t round = 0; round < kPutBackRounds && !waiting.empty(); ++round) {
         const std::size_t before = waiting.size();
@@ -88,7 +89,8 @@ void Remover::put_back_the_rest(PutBack how) {
                                          const bool had_faces = at_.begin(v) != at_.end(v);
                                          // D-57: a split that turns as the face it replaces
                                          // does but does not face its corners' normals, as
-                                         // D-55 takes one, where no facing split fits.
+                                         // D-55 takes one, where no facing split fits (and
+                                         // D-60's, last, where neither fits).
                                          const bool back = put_back(v, how);
                                          (had_faces ? reinserted_ : placed_) += back;
                                          return back;
@@ -207,8 +209,14 @@ bool Remover::within_height(std::uint32_t v, std::uint32_t f, double sides) cons
 }
 
 bool Remover::put_back(std::uint32_t v, PutBack how) {
+    // The splits `how` allows, found once; those over faces facing v's normal tried first
+    // (facing their corners' normals, then turned), those over faces against it (D-60) after.
     const std::vector<Split> splits = splits_near(v, how);
-    return fit_split(v, splits, true, how) || fit_split(v, splits, false, how);
+    if (fit_split(v, splits, true, PutBack::or_turned) ||
+        fit_split(v, splits, false, PutBack::or_turned))
+        return true;
+    return how == PutBack::or_flat_against &&
+           (fit_split(v, splits, true, how) || fit_split(v, splits, false, how));
 }
 
 bool Remover::fit_split(std::uint32_t v, const std::vector<Split>& splits, bool facing,
