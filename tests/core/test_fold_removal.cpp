@@ -407,6 +407,27 @@ TEST(FoldRemoval, SmallPiecesOnASurfaceJoinIt) {
     EXPECT_EQ(largest, 128u + 2u * 7u);
 }
 
+// D-62: in the last pass a face is against a point's normal only beyond 120° (θ's 60° short of
+// opposed). A point 0.17 longest sides over a face (not flat on it: D-60 does not take it)
+// whose normal is 100° off the face's goes in; one 150° off stays out (the other side of a
+// sheet, D-41).
+TEST(FoldRemoval, APointWhoseNormalSaysNothingOfItsSideGoesIn) {
+    TestMesh m = testing::square_patch(8);
+    const std::size_t patch_vertices = m.positions.size();
+    std::vector<Vec3> normals(patch_vertices, Vec3(0, 0, 1));
+    const auto off_the_patch = [](double degrees) {
+        const double a = degrees * M_PI / 180.0;
+        return Vec3(std::sin(a), 0, std::cos(a));
+    };
+    m.positions.emplace_back(0.30, 0.70, 0.03);
+    normals.push_back(off_the_patch(100));
+    m.positions.emplace_back(0.65, 0.55, 0.03);
+    normals.push_back(off_the_patch(150));
+    const Placed p = expect_placed(m, normals, patch_vertices, 1, 2);
+    EXPECT_EQ(p.vertex_source.back(), patch_vertices);
+    EXPECT_EQ(p.mesh.boundary_edges, 32u);
+}
+
 // D-60 comes last: a scrap lying on the surface (a triangle 0.17 of the patch faces' longest
 // side above a patch) joins it (D-55) although a point turned against both lies flat on the
 // scrap; had the point gone into the scrap first, the scrap would no longer be the piece it was,

@@ -21,6 +21,9 @@ constexpr double kMaxPutBackHeight = 0.5;
 // the face's longest sides (at 0.03, 0.05, 0.1, 0.2 the lion keeps 35, 28, 21, 18 points in
 // folds; a sheet of the other side closer than a tenth of a face is within the noise of this one).
 constexpr double kMaxFlatAgainstHeight = 0.1;
+// D-62: in that last pass a face is against a point's normal only beyond this angle: 180° less
+// the 60° within which RsR takes two normals to agree (θ's default), i.e. within 60° of opposed.
+constexpr double kMinAgainstAngle = 120.0 * M_PI / 180.0;
 // A vertex at the border goes back as triangles that close its corner, or as one triangle across
 // a border edge (D-41), only if no angle of them is smaller (a sliver hanging off the border is
 // worse than a point left out).
@@ -193,10 +196,16 @@ void Remover::add_corner_fill(std::uint32_t f, int k, std::uint32_t v,
 
 bool Remover::goes_over(std::uint32_t v, std::uint32_t f, PutBack how) const {
     if (!within_height(v, f, kMaxPutBackHeight)) return false;
-    if (normal_of(triangles_[f]).dot(normals_[v]) > 0) return true;
+    const Vec3 n = normal_of(triangles_[f]);
+    const double cosine = n.dot(normals_[v]);
+    if (cosine > 0) return true;
+    if (how != PutBack::or_flat_against) return false;
+    // D-62: a normal less than kMinAgainstAngle off the face says nothing of the side the point
+    // is on (estimated in noise, at a rim); only one nearer opposed marks the other sheet.
+    if (cosine > std::cos(kMinAgainstAngle) * n.Norm() * normals_[v].Norm()) return true;
     // D-60: a normal turned against the surface it lies on (a clump of flipped normals, the
     // noise of a crumpled patch) keeps no point out once nothing else takes it.
-    return how == PutBack::or_flat_against && within_height(v, f, kMaxFlatAgainstHeight);
+    return within_height(v, f, kMaxFlatAgainstHeight);
 }
 
 bool Remover::within_height(std::uint32_t v, std::uint32_t f, double sides) const {
