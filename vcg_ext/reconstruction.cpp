@@ -52,7 +52,6 @@ struct CompactMesh {
     IndexVector<VertexIndex, Point> vertex_point; ///< the cloud point (copies share it)
     std::vector<Triangle> triangles;              ///< over vertices
     std::vector<Point> unused;                    ///< cloud points in no triangle
-    std::size_t copies = 0;
 };
 
 // Used points become vertices in point order; non-manifold ones get one copy per extra fan.
@@ -64,10 +63,7 @@ CompactMesh<Point> compact(std::size_t points, std::vector<Triangle> triangles,
     const std::vector<std::uint32_t> source =
         compact_and_split_vertices(points, triangles, nullptr, exec);
     std::vector<std::uint8_t> used(points, 0);
-    for (std::uint32_t p : source) {
-        m.copies += used[p];
-        used[p] = 1;
-    }
+    for (std::uint32_t p : source) used[p] = 1;
     for (std::uint32_t p = 0; p < points; ++p)
         if (!used[p]) m.unused.push_back(Point(p));
     for (std::uint32_t p : source) m.vertex_point.push_back(Point(p));
@@ -159,7 +155,6 @@ void take_fold_removal(const PointSet& input, FoldRemoval& removal, std::size_t 
     unplaced.erase(std::remove_if(unplaced.begin(), unplaced.end(),
                                   [&](std::uint32_t i) { return is_vertex[i] != 0; }),
                    unplaced.end());
-    report.vertex_copies += removal.stats.vertex_copies;
 }
 
 // D-37: the points in no triangle join the mesh as vertices without a face, with their oriented
@@ -254,6 +249,10 @@ void account(const PointSet& input, const Reconstruction& mesh, ReconstructionRe
     enum : std::uint8_t { kOther, kVertex, kNoTriangle, kSmallCoarse, kFold };
     std::vector<std::uint8_t> outcome(input.size(), kOther);
     for (std::uint32_t i : mesh.vertex_input_index) outcome[i] = kVertex;
+    // Counted on the output, not where copies are made: a later step (D-55's joining piece)
+    // may take a copy back.
+    report.vertex_copies = mesh.vertex_input_index.size() -
+                           std::size_t(std::count(outcome.begin(), outcome.end(), kVertex));
     for (std::uint32_t i : report.not_in_triangle) outcome[i] = kNoTriangle;
     for (std::uint32_t i : report.dropped_small_coarse_component) outcome[i] = kSmallCoarse;
     for (std::uint32_t i : report.dropped_fold) outcome[i] = kFold;
@@ -315,7 +314,6 @@ CoarseMesh coarse_mesh_of(const PreparedCloud& coarse, std::vector<Triangle> tri
                           const std::vector<Vec3>& geometry, int candidate_rank,
                           const Execution& exec, ReconstructionReport& report) {
     CompactMesh<CoarseIndex> m = compact<CoarseIndex>(coarse.size(), std::move(triangles), exec);
-    report.vertex_copies = m.copies;
     CoarseMesh coarse_mesh;
     for (CoarseIndex p : m.vertex_point) {
         coarse_mesh.vertex_node.push_back(coarse.node[p]);
@@ -484,7 +482,6 @@ Unmeasured rsr_mesh_of(const PointSet& input, const RsrOptions& options, const E
     CompactMesh<PointIndex> m =
         compact<PointIndex>(cloud.size(), std::move(rsr_mesh.triangles), exec);
     for (PointIndex p : m.unused) report.not_in_triangle.push_back(cloud.input_index[p].value());
-    report.vertex_copies = m.copies;
     Reconstruction mesh = make_output(cloud, m.vertex_point, std::move(m.triangles));
     assembly.reset();
     const Normalisation normalisation = cloud.normalisation;
@@ -567,7 +564,6 @@ Unmeasured hrsr_mesh_of(PointSet& input, const ReconstructionOptions& options,
         // Its vertices are compacted into the output's: both are VertexIndex, of two meshes.
         CompactMesh<VertexIndex> out =
             compact<VertexIndex>(fine.vertex_node.size(), std::move(fine.triangles), exec);
-        report.vertex_copies += out.copies;
         IndexVector<VertexIndex, PointIndex> vertex_point;
         vertex_point.reserve(out.vertex_point.size());
         for (VertexIndex v : out.vertex_point) vertex_point.push_back(fine.vertex_node[v]);

@@ -34,7 +34,7 @@ struct ReconstructionReport {
     std::size_t referenced_input_points =
         0;                              ///< output vertices' points + duplicates merged into them
     double vertex_reference_ratio = 0;  ///< r_v = referenced_input_points / input points
-    std::size_t vertex_copies = 0;      ///< extra vertices made to split non-manifold vertices
+    std::size_t vertex_copies = 0;      ///< output vertices repeating a point (§5.8 fans)
     std::size_t flipped_components = 0; ///< closed components turned outwards (D-6)
 
     std::size_t candidates = 0, tree_edges = 0, face_split_edges = 0, handle_edges = 0,

@@ -428,6 +428,33 @@ TEST(FoldRemoval, APointWhoseNormalSaysNothingOfItsSideGoesIn) {
     EXPECT_EQ(p.mesh.boundary_edges, 32u);
 }
 
+// D-63: a scrap's points join the surface under it by D-62's rule too. Two triangles 0.17 of the
+// patch faces' longest side above a patch (too high for D-60's flat rule): one whose points'
+// normals are 100° off the patch's (estimated in noise, they say nothing of the side) joins it,
+// every point kept; one whose normals are 150° off (the other side of a sheet) stays.
+TEST(FoldRemoval, AScrapWhoseNormalsSayNothingOfItsSideJoinsTheSurface) {
+    TestMesh m = testing::square_patch(8);
+    std::vector<Vec3> normals(m.positions.size(), Vec3(0, 0, 1));
+    const auto add_scrap = [&](double x, double degrees) {
+        add_piece(m, {{x, 0.40, 0.03}, {x + 0.16, 0.42, 0.03}, {x + 0.06, 0.56, 0.03}},
+                  {{0, 1, 2}});
+        const double a = degrees * M_PI / 180.0;
+        normals.resize(m.positions.size(), Vec3(std::sin(a), 0, std::cos(a)));
+    };
+    add_scrap(0.15, 100);
+    add_scrap(0.60, 150);
+    std::vector<Triangle> triangles = m.triangles;
+    const FoldRemoval r = remove_folds(m.positions, normals, triangles, {});
+    EXPECT_EQ(r.stats.pieces_absorbed, 1u);
+    EXPECT_EQ(r.stats.points_absorbed, 3u);
+    const MeshStats s = kept_and_clean(m, r, triangles);
+    ASSERT_EQ(s.components.size(), 2u); // the patch with the first scrap, the second scrap
+    std::size_t largest = 0;
+    for (const ComponentTopology& c : s.components) largest = std::max(largest, c.faces);
+    EXPECT_EQ(largest, 128u + 2u * 3u);
+    EXPECT_EQ(s.boundary_edges, 32u + 3u);
+}
+
 // D-60 comes last: a scrap lying on the surface (a triangle 0.17 of the patch faces' longest
 // side above a patch) joins it (D-55) although a point turned against both lies flat on the
 // scrap; had the point gone into the scrap first, the scrap would no longer be the piece it was,

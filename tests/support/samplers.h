@@ -244,6 +244,28 @@ inline PointSet sample_plane(std::size_t side, double spacing = 1.0, unsigned se
     return s;
 }
 
+/// Two open cones of height 1 meeting at their apex (an hourglass), sampled ring by ring with
+/// `rings` rings each, the apex's normal across the axis: both cones reach the apex, which a
+/// manifold mesh can only hold as two vertices (a vertex copy, §5.8).
+inline PointSet sample_hourglass(int rings) {
+    PointSet s;
+    s.precision = CoordinatePrecision::Double;
+    for (int side : {1, -1})
+        for (int k = 1; k <= rings; ++k) {
+            const double h = double(k) / rings;
+            const int around = std::max(6, int(std::lround(2 * M_PI * k / std::sqrt(2.0))));
+            const double twist = side > 0 ? 0.3 * k : 0.5 * k;
+            for (int j = 0; j < around; ++j) {
+                const double t = 2 * M_PI * j / around + twist;
+                s.positions.emplace_back(h * std::cos(t), h * std::sin(t), side * h);
+                s.normals.push_back(Vec3(std::cos(t), std::sin(t), -side) / std::sqrt(2.0));
+            }
+        }
+    s.positions.emplace_back(0, 0, 0);
+    s.normals.emplace_back(1, 0, 0);
+    return s;
+}
+
 /// Appends `b` to `a` (normals kept only if both have them).
 inline void append(PointSet& a, const PointSet& b) {
     const bool normals = a.has_normals() && b.has_normals();

@@ -301,7 +301,8 @@ private:
     // first: a piece of at most kMaxPieceInHoleFaces faces lying in a short border loop of
     // another piece joins it by closing the loop, its points going into the fill. Pieces
     // largest first; their points go over the faces of another small piece not joined yet
-    // only where nothing else takes them (D-58).
+    // only where nothing else takes them (D-58). Their points go as D-60's last pass takes
+    // points (D-63).
     void absorb_small_pieces(FoldRemovalStats& stats);
 
     // One piece's faces out and its points over faces near them, or the piece stands again;
@@ -354,8 +355,10 @@ private:
     // The ways a point may go back over a face near it: first by a split facing its corners'
     // normals over faces facing its own normal (D-41), else
     enum class PutBack {
-        or_turned,       ///< by one that only turns as the faces it replaces (D-55, D-57, D-61)
-        or_flat_against, ///< the same, or over a face against its normal it lies flat on (D-60)
+        or_turned, ///< by one that only turns as the faces it replaces (D-57, D-61)
+        /// the same, or over a face its normal is not within 60° of opposed to (D-62) or that it
+        /// lies flat on (D-60): the last pass, and a small piece's points (D-63)
+        or_flat_against,
     };
 
     // Puts removed vertices back where they fit into a face around the hole's `corners` (the

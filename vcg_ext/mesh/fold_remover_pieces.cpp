@@ -190,8 +190,11 @@ bool Remover::absorb_piece(const std::vector<std::uint32_t>& piece, bool close_h
         if (point_has_standing_face(v)) return true;
         // The noise of the written coordinates may turn the faces there every way: a split
         // that faces away from the corners' normals but turns as the face it replaces does
-        // and crosses nothing is kept too (the bubbles of the 1M graded triple torus).
-        const bool back = put_back(v, PutBack::or_turned);
+        // and crosses nothing is kept too (the bubbles of the 1M graded triple torus). D-63: a
+        // scrap's normals, estimated in that noise, may lie nearly in the surface's plane; they
+        // go as D-60's last pass takes points (D-62: a face is against them only beyond
+        // 120°; D-60: or they lie flat on it).
+        const bool back = put_back(v, PutBack::or_flat_against);
         placed += back && std::binary_search(points.begin(), points.end(), v);
         return back;
     };
