@@ -1,11 +1,30 @@
 #include "mesh/welding.h"
 
+#include "radix_pass.h"
+
 #include <algorithm>
-#include <functional>
-#include <parallel/algorithm>
+#include <cstring>
 #include <tuple>
 
 namespace hrsr {
+
+namespace {
+
+// A 32-bit hash of a position's coordinates, equal for equal positions (−0 is taken as +0).
+std::uint32_t position_hash(const Vec3& p) {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (int k = 0; k < 3; ++k) {
+        const double c = p[k] + 0.0; // −0 + 0 = +0
+        std::uint64_t bits;
+        std::memcpy(&bits, &c, sizeof bits);
+        h = (h ^ bits) * 0xbf58476d1ce4e5b9ull;
+        h ^= h >> 31;
+    }
+    h *= 0x94d049bb133111ebull;
+    return std::uint32_t(h >> 32);
+}
+
+} // namespace
 
 std::vector<std::uint32_t> same_position_representatives(const std::vector<Vec3>& p) {
     return same_position_representatives(p, Execution{1, nullptr});
@@ -13,30 +32,45 @@ std::vector<std::uint32_t> same_position_representatives(const std::vector<Vec3>
 
 std::vector<std::uint32_t> same_position_representatives(const std::vector<Vec3>& p,
                                                          const Execution& exec) {
-    // Sorted as values next to their index: the comparisons then read memory in order (sorting
-    // indices that look their positions up was a tenth of the fold search on the lion).
-    struct Keyed {
-        double x, y, z;
-        std::uint32_t i;
-        bool operator<(const Keyed& o) const {
-            return std::tie(x, y, z, i) < std::tie(o.x, o.y, o.z, o.i);
-        }
-    };
-    // (position, index) orders every vertex, so any sort gives this one order.
-    std::vector<Keyed> order(p.size());
-    parallel_for_blocks(without_progress(exec), p.size(), kCheapBlock,
+    // Vertices by the hash of their position (a stable radix sort of hash << 32 | index: the
+    // indices rise within a hash), so that equal positions lie in one run of equal hashes, where
+    // they are compared exactly; nearly every run is one vertex, whose position is not read
+    // again. A comparison sort by position took 0.09 s of the lion's fold search.
+    const Execution quiet = without_progress(exec);
+    const std::size_t n = p.size();
+    std::vector<std::uint64_t> entries(n);
+    parallel_for_blocks(quiet, n, kCheapBlock,
                         [&](std::size_t, std::size_t first, std::size_t end) {
                             for (std::size_t i = first; i < end; ++i)
-                                order[i] = {p[i][0], p[i][1], p[i][2], std::uint32_t(i)};
+                                entries[i] = std::uint64_t(position_hash(p[i])) << 32 | i;
                         });
-    __gnu_parallel::sort(order.begin(), order.end(), std::less<Keyed>(),
-                         __gnu_parallel::balanced_quicksort_tag(thread_count(exec)));
-    std::vector<std::uint32_t> representative(p.size());
-    for (std::size_t s = 0; s < order.size(); ++s) {
-        const Keyed& k = order[s];
-        const bool same =
-            s > 0 && k.x == order[s - 1].x && k.y == order[s - 1].y && k.z == order[s - 1].z;
-        representative[k.i] = same ? representative[order[s - 1].i] : k.i;
+    std::vector<std::uint64_t> buffer;
+    for (int shift = 32; shift < 64; shift += 8)
+        stable_radix_pass(
+            entries, buffer, [shift](std::uint64_t e) { return std::size_t(e >> shift) & 0xff; },
+            quiet);
+    std::vector<std::uint32_t> representative(n);
+    std::vector<std::uint32_t> run;
+    for (std::size_t s = 0; s < n;) {
+        std::size_t e = s + 1;
+        while (e < n && entries[e] >> 32 == entries[s] >> 32) ++e;
+        if (e == s + 1) {
+            representative[std::uint32_t(entries[s])] = std::uint32_t(entries[s]);
+        } else {
+            // (position, index) order: each position's first vertex is its smallest index.
+            run.clear();
+            for (std::size_t r = s; r < e; ++r) run.push_back(std::uint32_t(entries[r]));
+            std::sort(run.begin(), run.end(), [&](std::uint32_t a, std::uint32_t b) {
+                return std::tie(p[a][0], p[a][1], p[a][2], a) <
+                       std::tie(p[b][0], p[b][1], p[b][2], b);
+            });
+            for (std::size_t r = 0; r < run.size(); ++r) {
+                const Vec3 &a = p[run[r]], &b = p[run[r > 0 ? r - 1 : 0]];
+                const bool same = r > 0 && a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+                representative[run[r]] = same ? representative[run[r - 1]] : run[r];
+            }
+        }
+        s = e;
     }
     return representative;
 }
