@@ -102,6 +102,9 @@ nlohmann::json fold_repair_json(const ReconstructionReport& r) {
             {"pieces_absorbed", r.fold_removal.pieces_absorbed},
             {"points_absorbed", r.fold_removal.points_absorbed},
             {"piece_holes_closed", r.fold_removal.piece_holes_closed},
+            {"faces_against_normals", r.fold_removal.faces_against_normals},
+            {"facing_flips", r.fold_removal.facing_flips},
+            {"faces_against_normals_left", r.fold_removal.faces_against_normals_left},
             {"intersecting_pairs_left", r.fold_removal.pairs_after}};
 }
 
@@ -280,6 +283,10 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
                     f.points_placed, f.small_holes_closed, f.slits_closed, f.pieces_absorbed,
                     f.piece_holes_closed);
     }
+    if (r.fold_removal.faces_against_normals > 0)
+        std::printf("  faces winding against their normals: %zu, %zu edges flipped, %zu left\n",
+                    r.fold_removal.faces_against_normals, r.fold_removal.facing_flips,
+                    r.fold_removal.faces_against_normals_left);
     if (r.flat_faces.found > 0)
         std::printf("  faces without area (corners on one line): %zu, %zu edges flipped, %zu taken "
                     "off the border, %zu left\n",

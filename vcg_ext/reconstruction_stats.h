@@ -34,6 +34,11 @@ struct FoldRemovalStats {
     std::size_t pieces_absorbed = 0;    ///< small pieces whose points went into a surface (D-55)
     std::size_t points_absorbed = 0;    ///< their points put into faces (a pinched copy is not)
     std::size_t piece_holes_closed = 0; ///< of them, pieces in a hole that was closed (D-56)
+    /// D-64, last: faces winding against their corners' normals, edges flipped to turn them,
+    /// and those left so.
+    std::size_t faces_against_normals = 0;
+    std::size_t facing_flips = 0;
+    std::size_t faces_against_normals_left = 0;
 };
 
 /// D-36 (mesh/flat_faces.h): faces with collinear corners in the coordinates as written.

@@ -46,8 +46,9 @@ struct FoldRemoval {
 /// piece whose every border loop has at most `pinhole_edges` edges (and more interior than
 /// border vertices) are closed so too, leaving out at most a vertex per 5 edges; and (D-48) the
 /// slits, loops of up to 48 edges whose sides are at most 1.5 spacings apart, as D-38 closes a
-/// gap. Two faces on the same three positions are a pair (a fin folded flat onto a face through a
-/// pinched copy).
+/// gap. Last (D-64), faces winding against their corners' normals are turned by edge flips that
+/// cross nothing; no vertex, piece or border changes. Two faces on the same three positions are
+/// a pair (a fin folded flat onto a face through a pinched copy).
 FoldRemoval remove_folds(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
                          std::vector<Triangle>& triangles, const Execution& exec,
                          std::size_t pinhole_edges = kMaxFilledLoop);

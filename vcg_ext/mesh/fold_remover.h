@@ -200,6 +200,27 @@ private:
     // the closing takes out goes back, or it is undone.
     void close_slits(FoldRemovalStats& stats);
 
+    // ----------------------------------------------------------------------------------------
+    // D-64, last: faces winding against their corners' normals turned by edge flips
+    // (fold_remover_facing.cpp).
+
+    // Every standing face whose normal points away from the sum of its corners' normals (a fold
+    // flat on the surface meets its neighbours only along edges: no pair shows it), in face
+    // order, has an edge flipped: the first whose two new faces both face their normals (in the
+    // later passes, fewer of the two against them than before: a flap of several faces turns one
+    // flip at a time), are proper, repeat no face, cross no standing face nor each other, and
+    // whose new diagonal is not an edge yet. Passes repeat while one flips. Vertices, pieces and
+    // the border stay as they are.
+    void turn_faces_against_normals(FoldRemovalStats& stats);
+
+    // One such flip at face f (strict: both new faces facing); the new faces, or none.
+    std::vector<std::uint32_t> turn(std::uint32_t f, bool strict);
+
+    // Whether t faces the sum of its corners' normals (proper() without the degeneracy test).
+    bool facing(const Triangle& t) const {
+        return normal_of(t).dot(normals_[t[0]] + normals_[t[1]] + normals_[t[2]]) > 0;
+    }
+
     // A slit: the loop's median width (each corner's distance to the nearest corner at least a
     // quarter of the loop away along it) is at most kMaxSlitWidth spacings, where the spacing is
     // the median edge of the faces around its corners; it is long for its width (at most

@@ -1,0 +1,91 @@
+// D-64 (fold_remover.h): faces winding against their corners' normals, turned by edge flips once
+// the folds are out and every point is placed.
+#include "mesh/fold_remover.h"
+
+#include <algorithm>
+
+namespace hrsr::folds {
+
+namespace {
+
+// Passes of each kind: a face that could not turn may after its neighbour has (a chain along a
+// fold); the lion's faces need three.
+constexpr int kMaxFacingPasses = 4;
+
+} // namespace
+
+void Remover::turn_faces_against_normals(FoldRemovalStats& stats) {
+    std::vector<std::uint32_t> against;
+    for (std::uint32_t f = 0; f < triangles_.size(); ++f)
+        if (alive_[f] && !facing(triangles_[f]) && !geometry_.degenerate(welded(triangles_[f])))
+            against.push_back(f);
+    stats.faces_against_normals = against.size();
+    for (const bool strict : {true, false})
+        for (int pass = 0; pass < kMaxFacingPasses; ++pass) {
+            std::vector<std::uint32_t> next;
+            bool flipped = false;
+            for (std::uint32_t f : against) {
+                if (!alive_[f] || facing(triangles_[f])) continue; // turned by a neighbour's flip
+                const std::vector<std::uint32_t> made = turn(f, strict);
+                if (made.empty()) {
+                    next.push_back(f);
+                    continue;
+                }
+                flipped = true;
+                ++stats.facing_flips;
+                for (std::uint32_t h : made)
+                    if (!facing(triangles_[h])) next.push_back(h);
+            }
+            against.swap(next);
+            if (!flipped) break;
+        }
+    stats.faces_against_normals_left =
+        std::size_t(std::count_if(against.begin(), against.end(), [&](std::uint32_t f) {
+            return alive_[f] && !facing(triangles_[f]);
+        }));
+}
+
+// f = (a, b, c) and g = (b, a, d) across f's edge k become (c, a, d) and (d, b, c).
+std::vector<std::uint32_t> Remover::turn(std::uint32_t f, bool strict) {
+    const Triangle t = triangles_[f];
+    for (int k = 0; k < 3; ++k) {
+        const std::uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+        std::uint32_t g = kNoFace;
+        std::size_t across = 0;
+        any_face_index(b, [&](std::uint32_t h) {
+            const Triangle& s = triangles_[h];
+            for (int i = 0; i < 3; ++i)
+                if (s[i] == b && s[(i + 1) % 3] == a) {
+                    g = h;
+                    ++across;
+                }
+            return false;
+        });
+        if (across != 1 || g == f) continue; // the border, or an edge held twice
+        const Triangle& s = triangles_[g];
+        const auto at = std::size_t(std::find(s.begin(), s.end(), b) - s.begin());
+        const std::uint32_t d = s[(at + 2) % 3];
+        if (d == c || has_edge(c, d)) continue;
+        const Triangle first{c, a, d}, second{d, b, c};
+        const int before = 1 + !facing(s), after = !facing(first) + !facing(second);
+        if (strict ? after > 0 : after >= before) continue;
+        if (geometry_.degenerate(welded(first)) || geometry_.degenerate(welded(second)) ||
+            repeats_a_face(first) || repeats_a_face(second))
+            continue;
+        alive_[f] = alive_[g] = 0; // while the new faces are tested
+        const bool crosses = geometry_.intersect(welded(first), welded(second)) ||
+                             intersects_standing(welded(first)) ||
+                             intersects_standing(welded(second));
+        alive_[f] = alive_[g] = 1;
+        if (crosses) continue;
+        retire(f);
+        retire(g);
+        add(first);
+        add(second);
+        const auto n = std::uint32_t(triangles_.size());
+        return {n - 2, n - 1};
+    }
+    return {};
+}
+
+} // namespace hrsr::folds
