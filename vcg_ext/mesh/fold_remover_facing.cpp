@@ -9,7 +9,7 @@ namespace hrsr::folds {
 namespace {
 
 // Passes of each kind: a face that could not turn may after its neighbour has (a chain along a
-// fold); the lion's faces need three.
+// fold).
 constexpr int kMaxFacingPasses = 4;
 
 } // namespace
