@@ -216,8 +216,8 @@ private:
     // One such flip at face f (strict: both new faces facing); the new faces, or none.
     std::vector<std::uint32_t> turn(std::uint32_t f, bool strict);
 
-    // Whether t faces the sum of its corners' normals (proper() without the degeneracy test).
-    bool facing(const Triangle& t) const {
+    // Whether t faces the sum of its corners' normals (proper()'s test of facing, and D-64's).
+    bool faces_its_normals(const Triangle& t) const {
         return normal_of(t).dot(normals_[t[0]] + normals_[t[1]] + normals_[t[2]]) > 0;
     }
 

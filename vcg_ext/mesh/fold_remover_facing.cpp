@@ -17,7 +17,8 @@ constexpr int kMaxFacingPasses = 4;
 void Remover::turn_faces_against_normals(FoldRemovalStats& stats) {
     std::vector<std::uint32_t> against;
     for (std::uint32_t f = 0; f < triangles_.size(); ++f)
-        if (alive_[f] && !facing(triangles_[f]) && !geometry_.degenerate(welded(triangles_[f])))
+        if (alive_[f] && !faces_its_normals(triangles_[f]) &&
+            !geometry_.degenerate(welded(triangles_[f])))
             against.push_back(f);
     stats.faces_against_normals = against.size();
     for (const bool strict : {true, false})
@@ -25,7 +26,8 @@ void Remover::turn_faces_against_normals(FoldRemovalStats& stats) {
             std::vector<std::uint32_t> next;
             bool flipped = false;
             for (std::uint32_t f : against) {
-                if (!alive_[f] || facing(triangles_[f])) continue; // turned by a neighbour's flip
+                if (!alive_[f] || faces_its_normals(triangles_[f]))
+                    continue; // turned by a neighbour's flip
                 const std::vector<std::uint32_t> made = turn(f, strict);
                 if (made.empty()) {
                     next.push_back(f);
@@ -34,14 +36,14 @@ void Remover::turn_faces_against_normals(FoldRemovalStats& stats) {
                 flipped = true;
                 ++stats.facing_flips;
                 for (std::uint32_t h : made)
-                    if (!facing(triangles_[h])) next.push_back(h);
+                    if (!faces_its_normals(triangles_[h])) next.push_back(h);
             }
             against.swap(next);
             if (!flipped) break;
         }
     stats.faces_against_normals_left =
         std::size_t(std::count_if(against.begin(), against.end(), [&](std::uint32_t f) {
-            return alive_[f] && !facing(triangles_[f]);
+            return alive_[f] && !faces_its_normals(triangles_[f]);
         }));
 }
 
@@ -67,7 +69,8 @@ std::vector<std::uint32_t> Remover::turn(std::uint32_t f, bool strict) {
         const std::uint32_t d = s[(at + 2) % 3];
         if (d == c || has_edge(c, d)) continue;
         const Triangle first{c, a, d}, second{d, b, c};
-        const int before = 1 + !facing(s), after = !facing(first) + !facing(second);
+        const int before = 1 + !faces_its_normals(s),
+                  after = !faces_its_normals(first) + !faces_its_normals(second);
         if (strict ? after > 0 : after >= before) continue;
         if (geometry_.degenerate(welded(first)) || geometry_.degenerate(welded(second)) ||
             repeats_a_face(first) || repeats_a_face(second))

@@ -325,10 +325,7 @@ std::vector<Triangle> Remover::best_fill(const Hole& hole, bool facing, bool avo
 
 bool Remover::proper(const Triangle& t, bool facing) const {
     if (geometry_.degenerate(welded(t))) return false;
-    if (!facing) return true;
-    const Vec3& a = positions_[t[0]];
-    const Vec3 n = (positions_[t[1]] - a) ^ (positions_[t[2]] - a);
-    return n.dot(normals_[t[0]] + normals_[t[1]] + normals_[t[2]]) > 0;
+    return !facing || faces_its_normals(t);
 }
 
 bool Remover::fits(const Hole& hole, const std::vector<Triangle>& fill, bool facing) {
