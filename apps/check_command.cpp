@@ -16,7 +16,8 @@ CLI::App* add_check_command(CLI::App& app, CheckArguments& a) {
     CLI::App* c = app.add_subcommand(
         "check", "Measure a triangle mesh: size, boundary, non-manifold edges and vertices,\n"
                  "components and genus, orientation, degenerate/duplicate/self-intersecting\n"
-                 "faces, minimum angles; with --input the share of input points that are\n"
+                 "faces, minimum angles, faces winding against their vertices' normals (when\n"
+                 "the mesh has normals); with --input the share of input points that are\n"
                  "vertices (r_v), with --reference Chamfer and Hausdorff distances.");
     c->add_option("mesh", a.mesh, "Triangle mesh (.ply, ascii or binary)")->required();
     c->add_option("--input", a.input,
@@ -53,7 +54,7 @@ void run_check(const CheckArguments& a) {
     std::optional<io::MeshFile> reference;
     if (!a.reference.empty()) reference = io::read_mesh(a.reference);
 
-    const MeshView view{mesh.points.positions, mesh.triangles};
+    const MeshView view{mesh.points.positions, mesh.triangles, &mesh.points.normals};
     std::optional<MeshView> reference_view;
     if (reference)
         reference_view.emplace(MeshView{reference->points.positions, reference->triangles});

@@ -62,6 +62,9 @@ nlohmann::json to_json(const MeshCheck& c) {
     } else {
         j["self_intersecting_pairs"] = nullptr;
     }
+    j["faces_against_vertex_normals"] = c.faces_against_vertex_normals
+                                            ? nlohmann::json(*c.faces_against_vertex_normals)
+                                            : nlohmann::json(nullptr);
     if (c.vertex_reference) {
         const VertexReference& r = *c.vertex_reference;
         j["input"] = {{"points", r.input_points},
@@ -102,7 +105,11 @@ std::string summary(const std::string& path, const MeshCheck& c) {
          std::to_string(c.faces.duplicate_faces) + " duplicate, " +
          (c.self_intersecting_pairs ? std::to_string(*c.self_intersecting_pairs)
                                     : std::string("(not tested)")) +
-         " self-intersecting pairs\n";
+         " self-intersecting pairs" +
+         (c.faces_against_vertex_normals ? ", " + std::to_string(*c.faces_against_vertex_normals) +
+                                               " against their vertices' normals"
+                                         : std::string()) +
+         "\n";
     const MinAngleStats& a = c.faces.min_angle;
     s += format("  min angle (deg): min %.3g, mean %.3g, median %.3g; ", a.min, a.mean, a.median) +
          std::to_string(a.below_1_degree) + " below 1, " + std::to_string(a.below_10_degrees) +

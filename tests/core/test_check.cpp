@@ -186,6 +186,30 @@ TEST(Check, FlippedFaceBreaksCoherentOrientation) {
     EXPECT_EQ(c.topology.boundary_edges, 16u);
 }
 
+// D-64's measure: a face wound against its corners' normals, as a fold lying flat would be.
+TEST(Check, FacesAgainstVertexNormalsAreCounted) {
+    TestMesh m = testing::square_patch(4);
+    const std::vector<Vec3> up(m.positions.size(), Vec3(0, 0, 1));
+    const std::vector<Vec3> down(m.positions.size(), Vec3(0, 0, -1));
+    EXPECT_FALSE(check(m).faces_against_vertex_normals.has_value()); // no normals, no count
+    const auto against = [&](const std::vector<Vec3>& normals) {
+        const MeshCheck c =
+            check_mesh({m.positions, m.triangles, &normals}, nullptr, nullptr, {}, {});
+        return c.faces_against_vertex_normals.value();
+    };
+    const std::size_t facing_up = m.triangles.size() - against(up);
+    EXPECT_TRUE(facing_up == 0 || facing_up == m.triangles.size()); // one winding throughout
+    const std::vector<Vec3>& with = facing_up > 0 ? up : down;
+    EXPECT_EQ(against(with), 0u);
+    std::swap(m.triangles[10][1], m.triangles[10][2]); // an interior triangle turned over
+    EXPECT_EQ(against(with), 1u);
+    m.triangles.push_back({0, 0, 1}); // no area: degenerate, not against
+    EXPECT_EQ(against(with), 1u);
+    const std::vector<Vec3> too_few(m.positions.size() - 1, Vec3(0, 0, 1));
+    EXPECT_THROW(check_mesh({m.positions, m.triangles, &too_few}, nullptr, nullptr, {}, {}),
+                 InvalidInput);
+}
+
 TEST(Check, TwoCrossingTrianglesAreOnePair) {
     TestMesh m;
     m.positions = {Vec3(0, 0, 0),  Vec3(2, 0, 0), Vec3(1, 2, 0),

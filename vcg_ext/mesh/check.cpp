@@ -28,6 +28,37 @@ void validate(const MeshView& m, const char* what) {
                                    std::to_string(m.positions.size()));
 }
 
+bool has_normals(const MeshView& m) {
+    return m.normals != nullptr && !m.normals->empty();
+}
+
+void validate_normals(const MeshView& m, const char* what) {
+    if (has_normals(m) && m.normals->size() != m.positions.size())
+        throw InvalidInput(std::string(what) + ": " + std::to_string(m.normals->size()) +
+                           " normals for " + std::to_string(m.positions.size()) + " vertices");
+}
+
+// D-64's test on the mesh as given: the face's winding normal against the sum of its corners'
+// normals (faces without area do not count; they are counted as degenerate).
+std::size_t faces_against_vertex_normals(const MeshView& m, const Execution& exec) {
+    const std::vector<Vec3>& n = *m.normals;
+    std::vector<std::size_t> against(block_count(m.triangles.size(), kCheapBlock), 0);
+    parallel_for_blocks(exec, m.triangles.size(), kCheapBlock,
+                        [&](std::size_t block, std::size_t first, std::size_t end) {
+                            for (std::size_t f = first; f < end; ++f) {
+                                const Triangle& t = m.triangles[f];
+                                const Vec3& a = m.positions[t[0]];
+                                const Vec3 winding =
+                                    (m.positions[t[1]] - a) ^ (m.positions[t[2]] - a);
+                                const double along = winding.dot(n[t[0]] + n[t[1]] + n[t[2]]);
+                                against[block] += winding.SquaredNorm() > 0 && along < 0;
+                            }
+                        });
+    std::size_t total = 0;
+    for (std::size_t a : against) total += a;
+    return total;
+}
+
 double diagonal(const std::vector<Vec3>& points) {
     vcg::Box3d box;
     for (const Vec3& p : points)
@@ -66,6 +97,7 @@ VertexReference vertex_reference(const MeshView& mesh, const PointSet& input, do
 MeshCheck check_mesh(const MeshView& mesh, const PointSet* input, const MeshView* reference,
                      const CheckOptions& o, const Execution& exec) {
     validate(mesh, "mesh");
+    validate_normals(mesh, "mesh");
     if (reference != nullptr) {
         validate(*reference, "reference");
         if (reference->triangles.empty()) throw InvalidInput("reference: no triangles");
@@ -87,6 +119,8 @@ MeshCheck check_mesh(const MeshView& mesh, const PointSet* input, const MeshView
         c.first_intersecting_pairs.assign(pairs.begin(),
                                           pairs.begin() + std::min<std::size_t>(pairs.size(), 100));
     }
+    if (has_normals(mesh))
+        c.faces_against_vertex_normals = faces_against_vertex_normals(mesh, exec);
     if (input != nullptr)
         c.vertex_reference = vertex_reference(mesh, *input, o.vertex_tolerance, exec);
     if (reference != nullptr) {

@@ -45,19 +45,25 @@ struct MeshCheck {
     bool coherently_oriented() const { return topology.inconsistently_oriented_edges == 0; }
     FaceQuality faces;
     std::optional<std::size_t> self_intersecting_pairs; ///< when tested
+    /// Faces (with area) winding against the sum of their corners' normals, when the mesh has
+    /// vertex normals: folds lying flat on the surface, which no intersecting pair shows (D-64's
+    /// test).
+    std::optional<std::size_t> faces_against_vertex_normals;
     std::vector<TrianglePair> first_intersecting_pairs; ///< up to 100, by triangle index
     std::optional<VertexReference> vertex_reference;    ///< with an input cloud
     std::optional<ReferenceDistance> reference;         ///< with a reference mesh
 };
 
-/// A mesh as positions and triangles over them.
+/// A mesh as positions and triangles over them, and its vertex normals if it has them.
 struct MeshView {
     const std::vector<Vec3>& positions;
     const std::vector<Triangle>& triangles;
+    const std::vector<Vec3>* normals = nullptr; ///< per position; null or empty: none
 };
 
 /// Measures `mesh`; `input` (may be null) gives r_v, `reference` (may be null) the distances.
-/// Throws InvalidInput when a mesh has a non-finite vertex coordinate, an index out of range, or
+/// Throws InvalidInput when a mesh has a non-finite vertex coordinate, an index out of range,
+/// normals that are not one per vertex, or
 /// the reference has no triangle, or when distances are asked for a mesh without triangles.
 MeshCheck check_mesh(const MeshView& mesh, const PointSet* input, const MeshView* reference,
                      const CheckOptions& options, const Execution& exec);
