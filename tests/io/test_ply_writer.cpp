@@ -13,6 +13,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -20,6 +21,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 
@@ -292,6 +294,28 @@ TEST(AtomicFile, CommitReplacesTheDestination) {
     }
     EXPECT_EQ(slurp(path), "new");
     EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.ply"});
+}
+
+// A destination that is not a regular file is written, not replaced: `-o /dev/null` run as root
+// once turned the machine's /dev/null into a regular file (session 53).
+TEST(AtomicFile, PipeIsWrittenNotReplaced) {
+    TempFolder folder;
+    const std::string path = folder.path("pipe");
+    ASSERT_EQ(mkfifo(path.c_str(), 0600), 0);
+    // The read end first, without waiting for a writer; the pipe's buffer holds the bytes.
+    const int reader = open(path.c_str(), O_RDONLY | O_NONBLOCK);
+    ASSERT_GE(reader, 0);
+    {
+        AtomicFile file(path);
+        file.stream() << "through the pipe";
+        file.commit();
+    }
+    char bytes[64] = {};
+    const ssize_t got = read(reader, bytes, sizeof bytes - 1);
+    close(reader);
+    EXPECT_EQ(std::string(bytes, std::size_t(std::max<ssize_t>(got, 0))), "through the pipe");
+    EXPECT_TRUE(std::filesystem::is_fifo(path));
+    EXPECT_EQ(folder.entries(), std::vector<std::string>{"pipe"}); // no temporary file left
 }
 
 TEST(AtomicFile, TwoFilesForTheSameDestinationDoNotCollide) {

@@ -1,5 +1,6 @@
 // Write a file completely or not at all: a temporary file next to the destination, renamed on
-// success, removed on failure.
+// success, removed on failure. A destination that exists and is not a regular file (/dev/null, a
+// pipe, /dev/stdout) is written directly: renaming onto it would replace the device itself.
 #pragma once
 
 #include <fstream>
@@ -9,7 +10,8 @@ namespace hrsr::io {
 
 class AtomicFile {
 public:
-    /// Opens a temporary file in the folder of `path` (binary mode). Throws hrsr::IoError.
+    /// Opens a temporary file in the folder of `path` (binary mode), or `path` itself when it
+    /// exists and is neither a regular file nor a folder. Throws hrsr::IoError.
     explicit AtomicFile(std::string path);
     /// Removes the temporary file unless commit() succeeded.
     ~AtomicFile();
@@ -23,7 +25,7 @@ public:
 
 private:
     std::string path_;
-    std::string temp_path_;
+    std::string temp_path_; ///< empty when writing to `path_` directly
     std::ofstream out_;
     bool committed_ = false;
 };
