@@ -1,7 +1,9 @@
 #include "fuzz_targets.h"
 
 #include "errors.h"
+#include "io/mesh_reader.h"
 #include "io/point_set_reader.h"
+#include "mesh/check.h"
 #include "reconstruction.h"
 
 #include <cstring>
@@ -60,6 +62,32 @@ void read_pcd_bytes(const std::uint8_t* data, std::size_t size) {
 }
 void read_las_bytes(const std::uint8_t* data, std::size_t size) {
     read_with(io::read_las, data, size);
+}
+
+void check_mesh_bytes(const std::uint8_t* data, std::size_t size) {
+    std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+    io::MeshFile mesh;
+    try {
+        mesh = io::read_ply_mesh(in, "fuzz");
+    } catch (const IoError& e) {
+        require(std::string(e.what()).rfind("fuzz", 0) == 0, "a read error does not name the file");
+        return;
+    }
+    for (const Triangle& t : mesh.triangles)
+        for (std::uint32_t v : t) require(v < mesh.points.size(), "a triangle refers to no vertex");
+    constexpr std::size_t kMostTriangles = 2000; // the pair test grows with the area they cover
+    if (mesh.triangles.size() > kMostTriangles) return;
+    const MeshView view{mesh.points.positions, mesh.triangles, &mesh.points.normals};
+    try {
+        const MeshCheck c = check_mesh(view, nullptr, nullptr, CheckOptions{}, {1, nullptr});
+        require(c.topology.faces == mesh.triangles.size(), "check lost a triangle");
+        require(c.self_intersecting_pairs.has_value(), "the pair test did not run");
+        require(c.faces_against_vertex_normals.has_value() == !mesh.points.normals.empty(),
+                "faces against normals counted without normals, or not with them");
+        require(c.faces_against_vertex_normals.value_or(0) <= c.topology.faces,
+                "more faces against normals than faces");
+    } catch (const InvalidInput&) { // non-finite coordinates
+    }
 }
 
 void reconstruct_bytes(const std::uint8_t* data, std::size_t size) {

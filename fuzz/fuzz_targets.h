@@ -18,6 +18,11 @@ void read_pts_bytes(const std::uint8_t* data, std::size_t size);
 void read_pcd_bytes(const std::uint8_t* data, std::size_t size);
 void read_las_bytes(const std::uint8_t* data, std::size_t size);
 
+/// read_ply_mesh on the bytes, then, for a mesh of at most 2,000 triangles, every measure of
+/// `hrsr check` on it (self-intersections and faces against vertex normals included); checks the
+/// measures' own consistency.
+void check_mesh_bytes(const std::uint8_t* data, std::size_t size);
+
 /// Reconstruction of a small cloud made from the bytes: the first byte chooses the method, the
 /// normals and k; then each 6 bytes are a point (three int16 / 256), each further 6 (if the
 /// normals flag is set) a normal. At most 256 points.

@@ -56,7 +56,7 @@ CC=clang-14 CXX=clang++-14 cmake -S "$ROOT" -B "$FUZZ" "${OPT[@]}" \
   -DHRSR_WARNINGS_AS_ERRORS=OFF \
   -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" \
   >/dev/null
-TARGETS=(read_ply read_xyz read_obj read_pts read_pcd read_las reconstruct)
+TARGETS=(read_ply read_xyz read_obj read_pts read_pcd read_las check_mesh reconstruct)
 cmake --build "$FUZZ" -j"$JOBS" "${TARGETS[@]/#/--target=fuzz_}" >/dev/null
 fuzz_built=$(date +%s)
 echo "test_sanitizers.sh: fuzz build took $(( fuzz_built - tested )) s"

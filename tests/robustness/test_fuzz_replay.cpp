@@ -40,6 +40,10 @@ TEST(FuzzReplay, Readers) {
     EXPECT_GE(replay("read_las", fuzz::read_las_bytes), 2u);
 }
 
+TEST(FuzzReplay, MeshCheck) {
+    EXPECT_GE(replay("check_mesh", fuzz::check_mesh_bytes), 3u);
+}
+
 TEST(FuzzReplay, Reconstruction) {
     EXPECT_GE(replay("reconstruct", fuzz::reconstruct_bytes), 2u);
 }
