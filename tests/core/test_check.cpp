@@ -186,6 +186,30 @@ TEST(Check, FlippedFaceBreaksCoherentOrientation) {
     EXPECT_EQ(c.topology.boundary_edges, 16u);
 }
 
+// Two pieces touching at a vertex (as ball pivoting often leaves them): each is a disc of its own.
+// Counted by vertex, the shared vertex went to one piece only and the loops through it were one,
+// so the other piece came out closed with genus 1.
+TEST(Check, PiecesSharingAVertexKeepTheirOwnTopology) {
+    TestMesh m = testing::square_patch(2);
+    TestMesh other = testing::shifted(testing::square_patch(2), Vec3(1, 1, 0));
+    append(m, other);
+    // Weld the second patch's corner at (1, 1) onto the first's.
+    const auto corner = std::uint32_t(
+        std::find(m.positions.begin(), m.positions.end(), Vec3(1, 1, 0)) - m.positions.begin());
+    for (std::size_t t = testing::square_patch(2).triangles.size(); t < m.triangles.size(); ++t)
+        for (std::uint32_t& v : m.triangles[t])
+            if (m.positions[v] == Vec3(1, 1, 0)) v = corner;
+    const MeshCheck c = check(m);
+    EXPECT_EQ(c.topology.non_manifold_vertices, 1u);
+    ASSERT_EQ(c.topology.components.size(), 2u);
+    for (const ComponentTopology& piece : c.topology.components) {
+        EXPECT_EQ(piece.vertices, 9u);
+        EXPECT_EQ(piece.boundary_loops, 1u);
+        EXPECT_EQ(piece.genus(), 0);
+    }
+    EXPECT_EQ(c.topology.boundary_loops, 2u);
+}
+
 // D-64's measure: a face wound against its corners' normals, as a fold lying flat would be.
 TEST(Check, FacesAgainstVertexNormalsAreCounted) {
     TestMesh m = testing::square_patch(4);
