@@ -51,12 +51,11 @@ void count_by_component_through_pinches(std::size_t n, const std::vector<Triangl
                                         const EdgeCensus& census, MeshStats& s) {
     // A key per (vertex, component): the vertex itself in the first component met (triangle
     // order), n + k in the others.
-    std::vector<std::uint32_t> first_component(n, ~0u);
+    std::vector<std::uint32_t> key_component(n, ~0u); // key -> its component
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> other_keys;
-    std::vector<std::uint32_t> key_component(n, ~0u);
     const auto key = [&](std::uint32_t v, std::uint32_t c) {
-        if (first_component[v] == ~0u) first_component[v] = key_component[v] = c;
-        if (first_component[v] == c) return v;
+        if (key_component[v] == ~0u) key_component[v] = c;
+        if (key_component[v] == c) return v;
         const auto [it, added] =
             other_keys.try_emplace({v, c}, std::uint32_t(key_component.size()));
         if (added) key_component.push_back(c);
