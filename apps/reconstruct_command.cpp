@@ -104,6 +104,7 @@ nlohmann::json fold_repair_json(const ReconstructionReport& r) {
             {"piece_holes_closed", r.fold_removal.piece_holes_closed},
             {"faces_against_normals", r.fold_removal.faces_against_normals},
             {"facing_flips", r.fold_removal.facing_flips},
+            {"facing_refills", r.fold_removal.facing_refills},
             {"faces_against_normals_left", r.fold_removal.faces_against_normals_left},
             {"intersecting_pairs_left", r.fold_removal.pairs_after}};
 }
@@ -284,9 +285,10 @@ void print_summary(const ReconstructArguments& a, const ReconstructionReport& r)
                     f.piece_holes_closed);
     }
     if (r.fold_removal.faces_against_normals > 0)
-        std::printf("  faces winding against their normals: %zu, %zu edges flipped, %zu left\n",
+        std::printf("  faces winding against their normals: %zu, %zu edges flipped, %zu fans "
+                    "refilled, %zu left\n",
                     r.fold_removal.faces_against_normals, r.fold_removal.facing_flips,
-                    r.fold_removal.faces_against_normals_left);
+                    r.fold_removal.facing_refills, r.fold_removal.faces_against_normals_left);
     if (r.flat_faces.found > 0)
         std::printf("  faces without area (corners on one line): %zu, %zu edges flipped, %zu taken "
                     "off the border, %zu left\n",

@@ -125,10 +125,10 @@ void FilterHrsrPlugin::log_summary(const hrsr::ReconstructionReport& r, double s
                 r.fold_removal.pieces_absorbed, r.fold_removal.points_absorbed,
                 r.fold_removal.piece_holes_closed);
     if (r.fold_removal.faces_against_normals > 0)
-        log_message("HRsR: %zu faces winding against their normals (D-64): %zu edges flipped, %zu "
-                    "left",
+        log_message("HRsR: %zu faces winding against their normals (D-64, D-65): %zu edges "
+                    "flipped, %zu fans refilled, %zu left",
                     r.fold_removal.faces_against_normals, r.fold_removal.facing_flips,
-                    r.fold_removal.faces_against_normals_left);
+                    r.fold_removal.facing_refills, r.fold_removal.faces_against_normals_left);
     if (r.flat_faces.found > 0)
         log_message("HRsR: %zu faces without area (corners on one line, D-36): %zu edges flipped, "
                     "%zu taken off the border, %zu left",

@@ -35,9 +35,10 @@ struct FoldRemovalStats {
     std::size_t points_absorbed = 0;    ///< their points put into faces (a pinched copy is not)
     std::size_t piece_holes_closed = 0; ///< of them, pieces in a hole that was closed (D-56)
     /// D-64, last: faces winding against their corners' normals, edges flipped to turn them,
-    /// and those left so.
+    /// fans refilled around a corner put back where no flip did (D-65), and the faces left so.
     std::size_t faces_against_normals = 0;
     std::size_t facing_flips = 0;
+    std::size_t facing_refills = 0;
     std::size_t faces_against_normals_left = 0;
 };
 

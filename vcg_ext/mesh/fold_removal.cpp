@@ -43,8 +43,9 @@ void Remover::run(FoldRemovalStats& stats) {
     // D-60 last: a point placed on a small piece would keep it from joining the surface (a
     // piece that took points stays; the RsR lion kept 8 pieces more).
     put_back_the_rest(PutBack::or_flat_against);
-    // D-64 after every point is placed: a flip changes no vertex, piece or border.
-    turn_faces_against_normals(stats);
+    // D-64 after every point is placed: a flip changes no vertex, piece or border; D-65 then
+    // refills around a corner what no flip turned (the corner back in the fill).
+    refill_faces_against_normals(turn_faces_against_normals(stats), stats);
     stats.vertices_reinserted = reinserted_;
     stats.points_placed = placed_;
     stats.points_joined_border = joined_border_;

@@ -132,8 +132,13 @@ private:
     std::uint32_t nearest_corner(const std::vector<std::uint32_t>& corners,
                                  const std::vector<std::uint32_t>& region) const;
 
+    // How far first_fitting_fill() searches: the triangulation best by its angles only, or then
+    // also the best among triangles that cross no standing face (a second, costlier search).
+    enum class FillSearch { by_angle, then_around_crossings };
+
     // Removes v's fan and fills its hole, if a triangulation fits.
-    bool refill(std::uint32_t v, bool facing);
+    bool refill(std::uint32_t v, bool facing,
+                FillSearch search = FillSearch::then_around_crossings);
 
     // `fill` stands instead of `faces`; the `removed` vertices go back where they fit around
     // the hole's `corners`.
@@ -141,7 +146,9 @@ private:
                  const std::vector<std::uint32_t>& removed,
                  const std::vector<std::uint32_t>& corners);
 
-    std::optional<std::vector<Triangle>> first_fitting_fill(const Hole& hole, bool facing);
+    std::optional<std::vector<Triangle>>
+    first_fitting_fill(const Hole& hole, bool facing,
+                       FillSearch search = FillSearch::then_around_crossings);
 
     // The triangulation of the hole with the largest smallest angle (dynamic programming over
     // its corners in order, which keeps the fan's orientation), whose diagonals are not edges
@@ -201,8 +208,8 @@ private:
     void close_slits(FoldRemovalStats& stats);
 
     // ----------------------------------------------------------------------------------------
-    // D-64, last: faces winding against their corners' normals turned by edge flips
-    // (fold_remover_facing.cpp).
+    // D-64 and D-65, last: faces winding against their corners' normals turned by edge flips,
+    // then refilled around a corner (fold_remover_facing.cpp).
 
     // Every standing face whose normal points away from the sum of its corners' normals (a fold
     // flat on the surface meets its neighbours only along edges: no pair shows it), in face
@@ -210,8 +217,25 @@ private:
     // later passes, fewer of the two against them than before: a flap of several faces turns one
     // flip at a time), are proper, repeat no face, cross no standing face nor each other, and
     // whose new diagonal is not an edge yet. Passes repeat while one flips. Vertices, pieces and
-    // the border stay as they are.
-    void turn_faces_against_normals(FoldRemovalStats& stats);
+    // the border stay as they are. Returns the faces still against their normals.
+    std::vector<std::uint32_t> turn_faces_against_normals(FoldRemovalStats& stats);
+
+    // D-65: each face of `against` that still winds against its corners' normals, for its first
+    // inner corner (closed link) that allows it: the corner's fan is taken out, its hole filled
+    // by triangles facing their normals that cross nothing (refill()) and the corner put back
+    // into a face of the fill by a facing split (reinsert()); kept only if the corner is back,
+    // joined no border edge and the new faces make no more sharp folds (sharp_edges()) than the
+    // fan did, else undone. Every new face faces its normals, so vertices, pieces and the border
+    // stay as they are (a disc replaced by a disc) and the count only falls.
+    void refill_faces_against_normals(const std::vector<std::uint32_t>& against,
+                                      FoldRemovalStats& stats);
+
+    // Edges of `faces` (standing) whose two faces' normals are more than kSharpFoldDegrees
+    // apart, each once.
+    std::size_t sharp_edges(const std::vector<std::uint32_t>& faces) const;
+
+    // v's faces form one fan whose link is closed (v is no border vertex and no pinch).
+    bool inner_vertex(std::uint32_t v) const;
 
     // One such flip at face f (strict: both new faces facing); the new faces, or none.
     std::vector<std::uint32_t> turn(std::uint32_t f, bool strict);

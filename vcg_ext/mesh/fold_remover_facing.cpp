@@ -1,8 +1,9 @@
-// D-64 (fold_remover.h): faces winding against their corners' normals, turned by edge flips once
-// the folds are out and every point is placed.
+// D-64 and D-65 (fold_remover.h): faces winding against their corners' normals, turned by edge
+// flips once the folds are out and every point is placed, then refilled around a corner.
 #include "mesh/fold_remover.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hrsr::folds {
 
@@ -11,10 +12,13 @@ namespace {
 // Passes of each kind: a face that could not turn may after its neighbour has (a chain along a
 // fold).
 constexpr int kMaxFacingPasses = 4;
+// D-65: an edge is a sharp fold when its two faces' normals are more than this apart (the
+// measure of D-64's table: such edges are folds that shading shows as creases).
+constexpr double kSharpFoldDegrees = 170;
 
 } // namespace
 
-void Remover::turn_faces_against_normals(FoldRemovalStats& stats) {
+std::vector<std::uint32_t> Remover::turn_faces_against_normals(FoldRemovalStats& stats) {
     std::vector<std::uint32_t> against;
     for (std::uint32_t f = 0; f < triangles_.size(); ++f)
         if (alive_[f] && !faces_its_normals(triangles_[f]) &&
@@ -41,10 +45,57 @@ void Remover::turn_faces_against_normals(FoldRemovalStats& stats) {
             against.swap(next);
             if (!flipped) break;
         }
+    return against;
+}
+
+void Remover::refill_faces_against_normals(const std::vector<std::uint32_t>& against,
+                                           FoldRemovalStats& stats) {
+    for (std::uint32_t f : against) {
+        if (!alive_[f] || faces_its_normals(triangles_[f])) continue; // refilled with another
+        const Triangle t = triangles_[f];
+        for (std::uint32_t v : t) {
+            if (!inner_vertex(v)) continue;
+            // No more sharp folds than before: a corner put back far off its fill's plane (noise
+            // deeper than the spacing) turns a gentle fold into a sharp one (without this test
+            // the bunny's edges between faces over 170° apart went 191 → 269; session 54).
+            const std::size_t sharp_before = sharp_edges(faces_of(v));
+            const Undo undo = begin_undo();
+            // The fill faces its normals (refill's `facing`), and so do the put-back's splits.
+            // The fill best by its angles only: the search around crossings found 0.6–3 % more
+            // refills at about three times the step's time (ALGORITHM.md D-65).
+            bool kept = refill(v, true, FillSearch::by_angle) && point_has_standing_face(v) &&
+                        joined_border_ == undo.joined_border;
+            if (kept) {
+                std::vector<std::uint32_t> made;
+                for (auto g = std::uint32_t(undo.faces); g < triangles_.size(); ++g)
+                    if (alive_[g]) made.push_back(g);
+                kept = sharp_edges(made) <= sharp_before;
+            }
+            end_undo(undo, kept);
+            if (kept) {
+                ++stats.facing_refills;
+                break;
+            }
+        }
+    }
     stats.faces_against_normals_left =
         std::size_t(std::count_if(against.begin(), against.end(), [&](std::uint32_t f) {
             return alive_[f] && !faces_its_normals(triangles_[f]);
         }));
+}
+
+std::size_t Remover::sharp_edges(const std::vector<std::uint32_t>& faces) const {
+    static const double cos_sharp = std::cos(kSharpFoldDegrees * M_PI / 180.0);
+    std::size_t sharp = 0;
+    for (std::uint32_t f : faces)
+        for (int k = 0; k < 3; ++k) {
+            const std::optional<std::uint32_t> g = across(f, k);
+            if (!g || (*g < f && std::find(faces.begin(), faces.end(), *g) != faces.end()))
+                continue; // the border, or an edge counted from g
+            const Vec3 a = normal_of(triangles_[f]), b = normal_of(triangles_[*g]);
+            sharp += a.dot(b) < cos_sharp * a.Norm() * b.Norm();
+        }
+    return sharp;
 }
 
 // f = (a, b, c) and g = (b, a, d) across f's edge k become (c, a, d) and (d, b, c).

@@ -227,7 +227,18 @@ std::uint32_t Remover::nearest_corner(const std::vector<std::uint32_t>& corners,
     return best;
 }
 
-bool Remover::refill(std::uint32_t v, bool facing) {
+bool Remover::inner_vertex(std::uint32_t v) const {
+    std::vector<Triangle> fan;
+    any_face(v, [&](const Triangle& t) {
+        fan.push_back(t);
+        return false;
+    });
+    if (fan.empty()) return false;
+    const std::optional<Hole> link = link_of(v, fan);
+    return link && link->closed;
+}
+
+bool Remover::refill(std::uint32_t v, bool facing, FillSearch search) {
     const std::vector<std::uint32_t> fan = faces_of(v);
     std::vector<Triangle> fan_triangles;
     for (std::uint32_t f : fan) fan_triangles.push_back(triangles_[f]);
@@ -235,7 +246,7 @@ bool Remover::refill(std::uint32_t v, bool facing) {
     if (!hole || (hole->closed && hole->corners.size() < 3)) return false;
     for (std::uint32_t f : fan) alive_[f] = 0; // while the fills are tested
     set_faces_out(fan);
-    const std::optional<std::vector<Triangle>> fill = first_fitting_fill(*hole, facing);
+    const std::optional<std::vector<Triangle>> fill = first_fitting_fill(*hole, facing, search);
     for (std::uint32_t f : fan) alive_[f] = 1;
     set_faces_out({});
     if (!fill) return false;
@@ -251,7 +262,8 @@ void Remover::replace(const std::vector<std::uint32_t>& faces, const std::vector
     reinserted_ += reinsert(removed, corners);
 }
 
-std::optional<std::vector<Triangle>> Remover::first_fitting_fill(const Hole& hole, bool facing) {
+std::optional<std::vector<Triangle>> Remover::first_fitting_fill(const Hole& hole, bool facing,
+                                                                 FillSearch search) {
     const std::size_t m = hole.corners.size();
     if (m == 2) return std::vector<Triangle>(); // one face at a border vertex: it just goes
     // An open hole's last side is new, or a border edge whose face lies on its other side
@@ -264,6 +276,7 @@ std::optional<std::vector<Triangle>> Remover::first_fitting_fill(const Hole& hol
         // The best by angle alone first (cheap), then the best among triangles that cross
         // no standing face.
         for (const bool avoid_crossings : {false, true}) {
+            if (avoid_crossings && search == FillSearch::by_angle) break;
             std::vector<Triangle> best = best_fill(hole, facing, avoid_crossings);
             if (!best.empty() && fits(hole, best, facing)) return best;
         }
