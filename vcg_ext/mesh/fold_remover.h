@@ -223,9 +223,9 @@ private:
     // D-65: each face of `against` that still winds against its corners' normals, for its first
     // inner corner (closed link) that allows it: the corner's fan is taken out, its hole filled
     // by triangles facing their normals that cross nothing (refill()) and the corner put back
-    // into a face of the fill by a facing split (reinsert()); kept only if the corner is back,
-    // joined no border edge and the new faces make no more sharp folds (sharp_edges()) than the
-    // fan did, else undone. Every new face faces its normals, so vertices, pieces and the border
+    // by a facing split of a face near the hole into three (reinsert()); kept only if the corner
+    // is back and the new faces make no more sharp folds (sharp_edges()) than the fan did, else
+    // undone. Every new face faces its normals, so vertices, pieces and the border
     // stay as they are (a disc replaced by a disc) and the count only falls.
     void refill_faces_against_normals(const std::vector<std::uint32_t>& against,
                                       FoldRemovalStats& stats);

@@ -60,11 +60,11 @@ void Remover::refill_faces_against_normals(const std::vector<std::uint32_t>& aga
             // the bunny's edges between faces over 170° apart went 191 → 269; session 54).
             const std::size_t sharp_before = sharp_edges(faces_of(v));
             const Undo undo = begin_undo();
-            // The fill faces its normals (refill's `facing`), and so do the put-back's splits.
+            // The fill faces its normals (refill's `facing`), and so does the put-back's split
+            // of a face into three around v (reinsert(): v comes back as an inner vertex).
             // The fill best by its angles only: the search around crossings found 0.6–3 % more
             // refills at about three times the step's time (ALGORITHM.md D-65).
-            bool kept = refill(v, true, FillSearch::by_angle) && point_has_standing_face(v) &&
-                        joined_border_ == undo.joined_border;
+            bool kept = refill(v, true, FillSearch::by_angle) && point_has_standing_face(v);
             if (kept) {
                 std::vector<std::uint32_t> made;
                 for (auto g = std::uint32_t(undo.faces); g < triangles_.size(); ++g)
