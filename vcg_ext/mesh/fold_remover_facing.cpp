@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace hrsr::folds {
 
@@ -50,10 +51,16 @@ std::vector<std::uint32_t> Remover::turn_faces_against_normals(FoldRemovalStats&
 
 void Remover::refill_faces_against_normals(const std::vector<std::uint32_t>& against,
                                            FoldRemovalStats& stats) {
+    // A corner that failed is not tried again before a refill is kept: an undone attempt leaves
+    // the mesh as it was, so the outcome would be the same (the output is that of trying).
+    std::unordered_map<std::uint32_t, std::size_t> failed_after; // corner → refills kept then
+    std::size_t kept_refills = 0;
     for (std::uint32_t f : against) {
         if (!alive_[f] || faces_its_normals(triangles_[f])) continue; // refilled with another
         const Triangle t = triangles_[f];
         for (std::uint32_t v : t) {
+            const auto failed = failed_after.find(v);
+            if (failed != failed_after.end() && failed->second == kept_refills) continue;
             if (!inner_vertex(v)) continue;
             // No more sharp folds than before: a corner put back far off its fill's plane (noise
             // deeper than the spacing) turns a gentle fold into a sharp one (without this test
@@ -73,11 +80,13 @@ void Remover::refill_faces_against_normals(const std::vector<std::uint32_t>& aga
             }
             end_undo(undo, kept);
             if (kept) {
-                ++stats.facing_refills;
+                ++kept_refills;
                 break;
             }
+            failed_after[v] = kept_refills;
         }
     }
+    stats.facing_refills += kept_refills;
     stats.faces_against_normals_left =
         std::size_t(std::count_if(against.begin(), against.end(), [&](std::uint32_t f) {
             return alive_[f] && !faces_its_normals(triangles_[f]);
