@@ -3,6 +3,7 @@
 #include "check_command.h"
 #include "command_line.h"
 #include "errors.h"
+#include "huge_pages.h"
 #include "normals_command.h"
 #include "process_stats.h"
 #include "reconstruct_command.h"
@@ -23,6 +24,7 @@ int fail(int code, const char* what) {
 } // namespace
 
 int main(int argc, char** argv) {
+    hrsr::app::ask_for_huge_pages(argv);
     hrsr::app::release_large_blocks_eagerly();
     CLI::App app{"hrsr " HRSR_VERSION
                  " - Hierarchical Rotation System Reconstruction of point clouds",

@@ -169,5 +169,24 @@ TEST_F(Cli, SameBytesForOneAndTwoThreads) {
     EXPECT_GT(slurp(path("a.ply")).size(), 10000u * 24);
 }
 
+// hrsr starts itself again once with glibc's huge pages asked for (apps/huge_pages.h), unless
+// GLIBC_TUNABLES names them: the arguments (a path with a space among them), the exit code, the
+// messages and the mesh must be the same either way.
+TEST_F(Cli, RestartForHugePagesChangesNothingButSpeed) {
+    const std::string reconstruct = std::string("reconstruct ") + HRSR_SAMPLE + " -o ";
+    const Outcome restarted = hrsr(reconstruct + "'" + path("a mesh.ply") + "'");
+    const Outcome one_process =
+        testing::run("GLIBC_TUNABLES=glibc.malloc.hugetlb=0 " + std::string(HRSR_EXE),
+                     reconstruct + "'" + path("b mesh.ply") + "'", dir_);
+    ASSERT_EQ(restarted.exit_code, 0) << restarted.err;
+    ASSERT_EQ(one_process.exit_code, 0) << one_process.err;
+    EXPECT_EQ(slurp(path("a mesh.ply")), slurp(path("b mesh.ply")));
+    EXPECT_GT(slurp(path("a mesh.ply")).size(), 10000u * 24);
+    EXPECT_EQ(lines(restarted.out), lines(one_process.out));
+    const Outcome bad = hrsr("reconstruct '" + path("no such file.ply") + "' -o " + path("c.ply"));
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_NE(bad.err.find("no such file.ply"), std::string::npos) << bad.err;
+}
+
 } // namespace
 } // namespace hrsr

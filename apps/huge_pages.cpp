@@ -1,0 +1,60 @@
+#include "huge_pages.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+namespace hrsr::app {
+
+namespace {
+
+// Whether malloc is glibc's: sanitizers replace it, and the tunable would change nothing.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kGlibcMalloc = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) ||                         \
+    __has_feature(memory_sanitizer)
+constexpr bool kGlibcMalloc = false;
+#else
+constexpr bool kGlibcMalloc = true;
+#endif
+#else
+constexpr bool kGlibcMalloc = true;
+#endif
+
+// The kernel's mode is `madvise`: huge pages only where asked for. With `always` malloc's
+// blocks get them anyway, with `never` not at all.
+bool huge_pages_on_request() {
+    std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
+    std::string line;
+    return std::getline(mode, line) && line.find("[madvise]") != std::string::npos;
+}
+
+} // namespace
+
+void ask_for_huge_pages(char** argv) {
+#if defined(__GLIBC__) && defined(__GLIBC_PREREQ)
+#if __GLIBC_PREREQ(2, 35)
+    if (!kGlibcMalloc) return;
+    const char* tunables = std::getenv("GLIBC_TUNABLES");
+    if (tunables && std::strstr(tunables, "glibc.malloc.hugetlb")) return;
+    if (!huge_pages_on_request()) return;
+    const std::string given = tunables ? tunables : "";
+    const std::string asked =
+        given.empty() ? "glibc.malloc.hugetlb=1" : given + ":glibc.malloc.hugetlb=1";
+    if (setenv("GLIBC_TUNABLES", asked.c_str(), 1) != 0) return;
+    execv("/proc/self/exe", argv);
+    // Still here: the exec failed (no /proc, say). Go on as started.
+    if (tunables)
+        setenv("GLIBC_TUNABLES", given.c_str(), 1);
+    else
+        unsetenv("GLIBC_TUNABLES");
+#endif
+#endif
+    (void)argv;
+}
+
+} // namespace hrsr::app
