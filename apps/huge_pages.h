@@ -7,12 +7,12 @@ namespace hrsr::app {
 /// `madvise`, the usual default) and glibc can ask (2.35 and later), runs this program again,
 /// once, with GLIBC_TUNABLES=glibc.malloc.hugetlb=1 added, so that malloc's large blocks and
 /// heaps are backed by 2 MB pages: the run spends far less time in page faults (bunny scans,
-/// two threads: 215k faults → 65k, 7.0–7.7 s → 5.5–6.1 s, the same bytes and peak memory;
-/// docs/BENCHMARKS.md, session 55). glibc reads its tunables only when a program starts, hence
-/// the new start. Returns (and nothing changes) when it does not apply, when the exec fails, or
-/// when GLIBC_TUNABLES already names glibc.malloc.hugetlb: `GLIBC_TUNABLES=glibc.malloc.hugetlb=0`
-/// keeps a run in one process (for a debugger or valgrind). Process-wide, so only the
-/// command-line tool calls it, first thing in main().
+/// two threads, alternated: 204k–220k faults → 63k–78k, 6.4–8.5 s → 5.1–6.5 s, the same bytes,
+/// peak within 2 %; docs/BENCHMARKS.md, session 55). glibc reads its tunables only when a program
+/// starts, hence the new start. Returns (and nothing changes) when it does not apply, when the exec
+/// fails, or when GLIBC_TUNABLES already names glibc.malloc.hugetlb:
+/// `GLIBC_TUNABLES=glibc.malloc.hugetlb=0` keeps a run in one process (for a debugger or valgrind).
+/// Process-wide, so only the command-line tool calls it, first thing in main().
 void ask_for_huge_pages(char** argv);
 
 } // namespace hrsr::app
