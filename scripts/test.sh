@@ -8,7 +8,10 @@ bash "$ROOT/scripts/setup.sh"
 bash "$ROOT/scripts/build.sh"
 echo "test.sh: set-up and build took $(( $(date +%s) - start )) s"
 cd "$BUILD"
-ctest --output-on-failure --timeout 600
+# As many tests at once as cores: most are single-threaded or short (serial: 612 s of a
+# fresh-clone CI run in session 55). clang_tidy runs alone (RUN_SERIAL), the X-server tests one
+# at a time (RESOURCE_LOCK xvfb).
+ctest --output-on-failure --timeout 600 -j"$(nproc)"
 echo "test.sh: ctest done after $(( $(date +%s) - start )) s"
 # Issue 7: Debug vs Release output, the ASan/UBSan build and the fuzzers. Always in CI; a local
 # run may skip them with HRSR_SKIP_EXTRA_TESTS=1 (they take several minutes).

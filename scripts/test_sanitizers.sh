@@ -23,19 +23,20 @@ TSAN=${HRSR_TSAN_BUILD_DIR:-$ROOT/build-tsan}
 STAGES=${HRSR_SANITIZER_STAGES:-asan fuzz tsan}
 # -O1 and line tables only: compiling is most of this script's time; traces keep file:line.
 OPT=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG")
-# Not under the sanitizers: no plugin, no format check; real scans and the large analytic
-# surfaces (minutes under ASan); determinism across threads and the cancellation-timing test
-# (they rerun code the other tests cover; the normal build runs them all).
+# Not under the sanitizers: no plugin, no benchmark programs (bench/ only measures; compiling its
+# CGAL drivers is minutes), no format check, no package install test (it builds a consumer); real
+# scans and the large analytic surfaces (minutes under ASan); determinism across threads and the
+# cancellation-timing test (they rerun code the other tests cover; the normal build runs them all).
 SLOW='clang_format|clang_tidy|meshlab_server|RealScans|Analytic/HrsrSurface|Analytic/RsrSurface'
 SLOW+='|Hrsr.VertexCountFallsAsLMinGrows|SameMeshForOneAndTwoThreads|SameResultForOneAndTwoThreads'
 SLOW+='|SameBytesForRepeatedRuns|CancellationPointsAreNeverFarApart|TileGroupsGiveTheSameMesh'
-SLOW+='|CgalAgreement.ScanReconstructions'
+SLOW+='|CgalAgreement.ScanReconstructions|^Package$'
 start=$(date +%s)
 
 # 1. ASan + UBSan
 if [[ " $STAGES " == *" asan "* ]]; then
 SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
-cmake -S "$ROOT" -B "$ASAN" "${OPT[@]}" -DHRSR_BUILD_PLUGIN=OFF \
+cmake -S "$ROOT" -B "$ASAN" "${OPT[@]}" -DHRSR_BUILD_PLUGIN=OFF -DHRSR_BUILD_BENCH=OFF \
   -DCMAKE_CXX_FLAGS="$SAN" -DCMAKE_EXE_LINKER_FLAGS="$SAN" >/dev/null
 cmake --build "$ASAN" -j"$JOBS" >/dev/null
 built=$(date +%s)
