@@ -8,10 +8,9 @@ bash "$ROOT/scripts/setup.sh"
 bash "$ROOT/scripts/build.sh"
 echo "test.sh: set-up and build took $(( $(date +%s) - start )) s"
 cd "$BUILD"
-# As many tests at once as cores: most are single-threaded or short (serial: 612 s of a
-# fresh-clone CI run in session 55). clang_tidy runs alone (RUN_SERIAL), the X-server tests one
-# at a time (RESOURCE_LOCK xvfb).
-ctest --output-on-failure --timeout 600 -j"$(nproc)"
+# One test at a time: the tests already keep both cores busy (session 55, fresh clone: 612 s
+# serial; with -j2 608 s, each test 1.8 times slower).
+ctest --output-on-failure --timeout 600
 echo "test.sh: ctest done after $(( $(date +%s) - start )) s"
 # Issue 7: Debug vs Release output, the ASan/UBSan build and the fuzzers. Always in CI; a local
 # run may skip them with HRSR_SKIP_EXTRA_TESTS=1 (they take several minutes).
