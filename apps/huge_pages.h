@@ -8,7 +8,7 @@ namespace hrsr::app {
 /// once, with GLIBC_TUNABLES=glibc.malloc.hugetlb=1 added, so that malloc's large blocks and
 /// heaps are backed by 2 MB pages: the run spends far less time in page faults (bunny scans,
 /// two threads, alternated: 204k–220k faults → 63k–78k, 6.4–8.5 s → 5.1–6.5 s, the same bytes,
-/// peak within 2 %; docs/BENCHMARKS.md, session 55). glibc reads its tunables only when a program
+/// peak within 3 %; docs/BENCHMARKS.md, session 55). glibc reads its tunables only when a program
 /// starts, hence the new start. Returns (and nothing changes) when it does not apply, when the exec
 /// fails, or when GLIBC_TUNABLES already names glibc.malloc.hugetlb:
 /// `GLIBC_TUNABLES=glibc.malloc.hugetlb=0` keeps a run in one process (for a debugger or valgrind).
