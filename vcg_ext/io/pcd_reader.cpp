@@ -36,7 +36,7 @@ struct Field {
     std::size_t attribute = 0; // index in PointSet::attributes (Role::Attribute)
 };
 
-struct Header {
+struct PcdHeader {
     std::vector<Field> fields;
     std::uint64_t width = 0, height = 1, points = 0;
     bool has_points = false;
@@ -73,7 +73,7 @@ bool scalar_type(char kind, std::uint64_t size, ScalarType& type) {
 }
 
 /// The numbers after a header keyword, one per field.
-std::vector<std::string_view> per_field(detail::Tokens tokens, const Header& h,
+std::vector<std::string_view> per_field(detail::Tokens tokens, const PcdHeader& h,
                                         std::string_view keyword, const std::string& name) {
     std::vector<std::string_view> words;
     std::string_view w;
@@ -85,7 +85,7 @@ std::vector<std::string_view> per_field(detail::Tokens tokens, const Header& h,
     return words;
 }
 
-std::uint64_t count_of(std::string_view word, const Header& h, const std::string& name) {
+std::uint64_t count_of(std::string_view word, const PcdHeader& h, const std::string& name) {
     std::uint64_t n = 0;
     if (!detail::parse_count(word, n))
         fail(name,
@@ -93,8 +93,8 @@ std::uint64_t count_of(std::string_view word, const Header& h, const std::string
     return n;
 }
 
-Header read_header(std::istream& in, const std::string& name) {
-    Header h;
+PcdHeader read_header(std::istream& in, const std::string& name) {
+    PcdHeader h;
     std::string line;
     bool has_width = false, has_type = false, has_size = false;
     for (;;) {
@@ -163,7 +163,7 @@ Header read_header(std::istream& in, const std::string& name) {
 }
 
 /// Gives every field its role and type, and `points` its attributes.
-void assign_roles(Header& h, PointSet& points, bool attributes, const std::string& name) {
+void assign_roles(PcdHeader& h, PointSet& points, bool attributes, const std::string& name) {
     static const std::pair<const char*, Role> kRoles[] = {{"x", Role::X},
                                                           {"y", Role::Y},
                                                           {"z", Role::Z},
@@ -240,7 +240,7 @@ Value decode(const unsigned char* p, const Field& f) {
 }
 
 /// Adds one point unless a coordinate is NaN (returns false then).
-bool store(const Header& h, const std::vector<Value>& values, PointSet& points) {
+bool store(const PcdHeader& h, const std::vector<Value>& values, PointSet& points) {
     double xyz[3] = {}, normal[3] = {};
     for (std::size_t i = 0; i < h.fields.size(); ++i) {
         const Role r = h.fields[i].role;
@@ -265,7 +265,7 @@ bool store(const Header& h, const std::vector<Value>& values, PointSet& points) 
     return true;
 }
 
-void read_ascii(std::istream& in, Header& h, PointSet& points, const std::string& name,
+void read_ascii(std::istream& in, PcdHeader& h, PointSet& points, const std::string& name,
                 std::uint64_t& skipped) {
     detail::LineReader lines(in, name);
     std::string_view line;
@@ -345,7 +345,7 @@ std::uint32_t little_u32(const unsigned char* p) {
 }
 
 /// The points, record after record (binary) or field after field (binary_compressed).
-void read_binary(std::istream& in, Header& h, PointSet& points, const std::string& name,
+void read_binary(std::istream& in, PcdHeader& h, PointSet& points, const std::string& name,
                  std::uint64_t& skipped) {
     const std::uint64_t record = h.record_size();
     if (h.points > 0 && record > std::numeric_limits<std::uint64_t>::max() / h.points)
@@ -400,7 +400,7 @@ void read_binary(std::istream& in, Header& h, PointSet& points, const std::strin
 }
 
 PointSet read_pcd_unguarded(std::istream& in, const std::string& name, bool attributes) {
-    Header h = read_header(in, name);
+    PcdHeader h = read_header(in, name);
     PointSet points;
     assign_roles(h, points, attributes, name);
     points.precision = std::all_of(h.fields.begin(), h.fields.end(),
