@@ -11,23 +11,19 @@ namespace hrsr::app {
 
 namespace {
 
-// Whether malloc is glibc's: sanitizers replace it, and the tunable would change nothing.
+// Sanitizers replace malloc: glibc's tunable would change nothing there.
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kGlibcMalloc = false;
+#define HRSR_MALLOC_REPLACED 1
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) ||                         \
     __has_feature(memory_sanitizer)
-constexpr bool kGlibcMalloc = false;
-#else
-constexpr bool kGlibcMalloc = true;
+#define HRSR_MALLOC_REPLACED 1
 #endif
-#else
-constexpr bool kGlibcMalloc = true;
 #endif
 
 // The kernel's mode is `madvise`: huge pages only where asked for. With `always` malloc's
 // blocks get them anyway, with `never` not at all.
-bool huge_pages_on_request() {
+[[maybe_unused]] bool huge_pages_on_request() {
     std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
     std::string line;
     return std::getline(mode, line) && line.find("[madvise]") != std::string::npos;
@@ -36,9 +32,8 @@ bool huge_pages_on_request() {
 } // namespace
 
 void ask_for_huge_pages(char** argv) {
-#if defined(__GLIBC__) && defined(__GLIBC_PREREQ)
+#if defined(__GLIBC__) && defined(__GLIBC_PREREQ) && !defined(HRSR_MALLOC_REPLACED)
 #if __GLIBC_PREREQ(2, 35)
-    if (!kGlibcMalloc) return;
     const char* tunables = std::getenv("GLIBC_TUNABLES");
     if (tunables && std::strstr(tunables, "glibc.malloc.hugetlb")) return;
     if (!huge_pages_on_request()) return;
