@@ -15,6 +15,7 @@ tar -C "$ROOT" --exclude=./.deps --exclude=./.git --exclude='./build*' --exclude
   tar -C "$R/hrsr/src" -xf -
 bash "$HERE/in_root.sh" "$R" sh -ec '
   cmake -S /hrsr/src -B /hrsr/build -G Ninja -DCMAKE_BUILD_TYPE=Release -DMESHLAB_SOURCE_DIR=/meshlab-src \
-        -DHRSR_BUILD_APPS=OFF -DHRSR_BUILD_TESTS=OFF -DHRSR_BUILD_BENCH=OFF >/dev/null
+        -DHRSR_BUILD_APPS=OFF -DHRSR_BUILD_TESTS=OFF -DHRSR_BUILD_BENCH=OFF \
+        -DCMAKE_UNITY_BUILD=ON >/dev/null
   nice cmake --build /hrsr/build -j"$(nproc)" --target filter_hrsr meshlab_host'
 echo "build_in_root.sh: $1: /hrsr/build/filter_hrsr/libfilter_hrsr.so and meshlab_host built"

@@ -6,6 +6,8 @@
 #include "reconstruction.h"
 #include "samplers.h"
 
+#include "mesh_fixtures.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +16,8 @@
 
 namespace hrsr {
 namespace {
+
+using testing::used_vertices;
 
 bool with_normals(const std::vector<Vec3>& p, const std::vector<Vec3>& n, const Triangle& t) {
     const Vec3 normal = (p[t[1]] - p[t[0]]) ^ (p[t[2]] - p[t[0]]);
@@ -25,12 +29,6 @@ std::size_t against(const std::vector<Vec3>& p, const std::vector<Vec3>& n,
     std::size_t count = 0;
     for (const Triangle& t : triangles) count += !with_normals(p, n, t);
     return count;
-}
-
-std::set<std::uint32_t> used_vertices(const std::vector<Triangle>& triangles) {
-    std::set<std::uint32_t> used;
-    for (const Triangle& t : triangles) used.insert(t.begin(), t.end());
-    return used;
 }
 
 // A disc in the plane z = 0 (normals +z): vertex 0 at the centre, a ring of six (1 … 6) around

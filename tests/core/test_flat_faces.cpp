@@ -4,6 +4,8 @@
 #include "mesh/mesh_stats.h"
 #include "mesh/self_intersections.h"
 
+#include "mesh_fixtures.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,16 +15,12 @@
 namespace hrsr {
 namespace {
 
+using testing::used_vertices;
+
 std::size_t flat_faces(const std::vector<Vec3>& p, const std::vector<Triangle>& triangles) {
     std::size_t n = 0;
     for (const Triangle& t : triangles) n += exact::collinear(p[t[0]], p[t[1]], p[t[2]]);
     return n;
-}
-
-std::set<std::uint32_t> used_vertices(const std::vector<Triangle>& triangles) {
-    std::set<std::uint32_t> used;
-    for (const Triangle& t : triangles) used.insert(t.begin(), t.end());
-    return used;
 }
 
 // Manifold, coherently oriented, every vertex kept, no flat face, no intersecting pair.

@@ -5,6 +5,7 @@
 #include "io/ply_writer.h"
 #include "io/point_set_reader.h"
 
+#include "read_bytes.h"
 #include "temp_folder.h"
 
 #include <gtest/gtest.h>
@@ -19,6 +20,7 @@
 namespace hrsr::io {
 namespace {
 
+using hrsr::testing::read_bytes;
 using hrsr::testing::TempFolder;
 
 struct Column {
@@ -89,12 +91,6 @@ std::string ply_with(const std::vector<Column>& columns, const std::string& form
     return h + data.str();
 }
 
-PointSet read(PointSet (*reader)(std::istream&, const std::string&, const ReadOptions&),
-              const std::string& bytes, ReadOptions options = {}) {
-    std::istringstream in(bytes, std::ios::binary);
-    return reader(in, "cloud", options);
-}
-
 void expect_columns(const PointSet& p, const std::vector<Column>& columns) {
     ASSERT_EQ(p.attributes.size(), columns.size());
     for (std::size_t j = 0; j < columns.size(); ++j) {
@@ -114,7 +110,7 @@ void expect_columns(const PointSet& p, const std::vector<Column>& columns) {
 TEST(PointAttributes, EveryScalarPropertyOfEveryTypeIsReadInEveryFormat) {
     for (const char* format : {"ascii", "binary_little_endian", "binary_big_endian"}) {
         SCOPED_TRACE(format);
-        const PointSet p = read(read_ply, ply_with(every_type(), format));
+        const PointSet p = read_bytes(read_ply, ply_with(every_type(), format));
         ASSERT_EQ(p.size(), 3u);
         EXPECT_EQ(p.positions[2], Vec3(2, 4, 6));
         expect_columns(p, every_type());
@@ -125,7 +121,8 @@ TEST(PointAttributes, EveryScalarPropertyOfEveryTypeIsReadInEveryFormat) {
 }
 
 TEST(PointAttributes, NoAttributesOptionReadsOnlyGeometry) {
-    const PointSet p = read(read_ply, ply_with(every_type(), "binary_little_endian"), {false});
+    const PointSet p =
+        read_bytes(read_ply, ply_with(every_type(), "binary_little_endian"), {false});
     EXPECT_EQ(p.size(), 3u);
     EXPECT_TRUE(p.attributes.empty());
     EXPECT_EQ(p.positions[1], Vec3(1, 2, 3));
@@ -134,7 +131,7 @@ TEST(PointAttributes, NoAttributesOptionReadsOnlyGeometry) {
 TEST(PointAttributes, AsciiValueOutsideItsTypeIsAnErrorNamingTheProperty) {
     std::vector<Column> columns = {{"uchar", "red", ScalarType::UInt8, {0, 256, 1}}};
     try {
-        read(read_ply, ply_with(columns, "ascii"));
+        read_bytes(read_ply, ply_with(columns, "ascii"));
         FAIL() << "no error";
     } catch (const IoError& e) {
         const std::string m = e.what();
@@ -144,7 +141,7 @@ TEST(PointAttributes, AsciiValueOutsideItsTypeIsAnErrorNamingTheProperty) {
         EXPECT_NE(m.find("uchar"), std::string::npos) << m;
     }
     // Without attributes the same file reads (its geometry is fine).
-    EXPECT_EQ(read(read_ply, ply_with(columns, "ascii"), {false}).size(), 3u);
+    EXPECT_EQ(read_bytes(read_ply, ply_with(columns, "ascii"), {false}).size(), 3u);
 }
 
 TEST(PointAttributes, GeometryNamesAreNeverAttributes) {
@@ -152,7 +149,7 @@ TEST(PointAttributes, GeometryNamesAreNeverAttributes) {
     const std::string bytes = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
                               "property float y\nproperty float z\nproperty float nx\n"
                               "property float quality\nend_header\n1 2 3 0.5 9\n";
-    const PointSet p = read(read_ply, bytes);
+    const PointSet p = read_bytes(read_ply, bytes);
     EXPECT_FALSE(p.has_normals());
     ASSERT_EQ(p.attributes.size(), 1u);
     EXPECT_EQ(p.attributes[0].name, "quality");
@@ -160,7 +157,7 @@ TEST(PointAttributes, GeometryNamesAreNeverAttributes) {
 }
 
 TEST(PointAttributes, ObjVertexColoursBecomeUcharRgb) {
-    const PointSet unit = read(read_obj, "v 0 0 0 1 0.5 0\nv 1 0 0 0 0 1\nvn 0 0 1\n");
+    const PointSet unit = read_bytes(read_obj, "v 0 0 0 1 0.5 0\nv 1 0 0 0 0 1\nvn 0 0 1\n");
     ASSERT_EQ(unit.attributes.size(), 3u);
     EXPECT_EQ(unit.attributes[0].name, "red");
     EXPECT_EQ(unit.attributes[2].name, "blue");
@@ -169,24 +166,24 @@ TEST(PointAttributes, ObjVertexColoursBecomeUcharRgb) {
     EXPECT_EQ(unit.attributes[1].value(0), 128.0); // round(0.5 * 255)
     EXPECT_EQ(unit.attributes[2].value(1), 255.0);
 
-    const PointSet bytes = read(read_obj, "v 0 0 0 255 10 0\nv 1 0 0 3 2 1\n");
+    const PointSet bytes = read_bytes(read_obj, "v 0 0 0 255 10 0\nv 1 0 0 3 2 1\n");
     ASSERT_EQ(bytes.attributes.size(), 3u);
     EXPECT_EQ(bytes.attributes[0].value(0), 255.0);
     EXPECT_EQ(bytes.attributes[1].value(0), 10.0);
     EXPECT_EQ(bytes.attributes[2].value(1), 1.0);
 
     // Some vertices without colour: none kept, with a warning; "v x y z w" is no colour.
-    const PointSet partial = read(read_obj, "v 0 0 0 1 1 1\nv 1 0 0\n");
+    const PointSet partial = read_bytes(read_obj, "v 0 0 0 1 1 1\nv 1 0 0\n");
     EXPECT_TRUE(partial.attributes.empty());
     EXPECT_EQ(partial.warnings.size(), 1u);
-    const PointSet weighted = read(read_obj, "v 0 0 0 1\nv 1 0 0 1\n");
+    const PointSet weighted = read_bytes(read_obj, "v 0 0 0 1\nv 1 0 0 1\n");
     EXPECT_TRUE(weighted.attributes.empty());
-    EXPECT_TRUE(read(read_obj, "v 0 0 0 1 1 1\n", {false}).attributes.empty());
+    EXPECT_TRUE(read_bytes(read_obj, "v 0 0 0 1 1 1\n", {false}).attributes.empty());
 }
 
 TEST(PointAttributes, WriterWritesEveryAttributeBackUnchanged) {
     TempFolder folder;
-    const PointSet in = read(read_ply, ply_with(every_type(), "binary_big_endian"));
+    const PointSet in = read_bytes(read_ply, ply_with(every_type(), "binary_big_endian"));
     const std::vector<Vec3> normals(3, Vec3(0, 0, 1));
     write_ply(folder.path("out.ply"), in.positions, normals, {{0, 1, 2}}, in.precision,
               in.attributes);
@@ -232,7 +229,7 @@ TEST(PointAttributes, SeveralFilesAreOneCloudWithTheSameAttributes) {
     for (std::size_t j = 0; j < first.size(); ++j)
         for (std::size_t i = 0; i < 3; ++i) {
             EXPECT_EQ(both.attributes[j].value(i),
-                      read(read_ply, ply_with(first, "ascii")).attributes[j].value(i));
+                      read_bytes(read_ply, ply_with(first, "ascii")).attributes[j].value(i));
             EXPECT_EQ(both.attributes[j].value(3 + i), first[j].expected == ScalarType::Float32
                                                            ? double(float(second[j].values[i]))
                                                            : second[j].values[i]);

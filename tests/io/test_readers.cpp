@@ -3,6 +3,7 @@
 #include "errors.h"
 #include "io/point_set_reader.h"
 
+#include "read_bytes.h"
 #include "temp_folder.h"
 
 #include <gtest/gtest.h>
@@ -74,21 +75,17 @@ private:
     std::string data_;
 };
 
-using StreamReader = PointSet (*)(std::istream&, const std::string&, const ReadOptions&);
-
-PointSet read_bytes(StreamReader read, const std::string& bytes, const std::string& name) {
-    std::istringstream in(bytes, std::ios::binary);
-    return read(in, name, ReadOptions{});
-}
+using testing::read_bytes;
+using testing::StreamReader;
 
 PointSet ply(const std::string& bytes) {
-    return read_bytes(read_ply, bytes, kName);
+    return read_bytes(read_ply, bytes, {}, kName);
 }
 
 /// The message of the IoError that reading `bytes` must throw ("" and a failure otherwise).
 std::string error_of(StreamReader read, const std::string& bytes, const std::string& name) {
     try {
-        read_bytes(read, bytes, name);
+        read_bytes(read, bytes, {}, name);
     } catch (const IoError& e) {
         return e.what();
     } catch (const std::exception& e) {
@@ -114,7 +111,7 @@ void expect_ply_error(const std::string& bytes, const std::string& word) {
 /// Reading may succeed or throw IoError; anything else (or a crash) fails the test.
 void expect_success_or_io_error(StreamReader read, const std::string& bytes) {
     try {
-        read_bytes(read, bytes, kName);
+        read_bytes(read, bytes, {}, kName);
     } catch (const IoError& e) {
         EXPECT_EQ(std::string(e.what()).rfind(kName + ": ", 0), 0u) << e.what();
     } catch (const std::exception& e) {
@@ -561,7 +558,7 @@ TEST(Xyz, ThreeColumnsWithCommentsCrlfAndBlankLines) {
                              "\t-0.1\t+2.5e-3   1e10  \r\n"
                              "0.1 nan inf\n"
                              "4 5 6"; // no final newline
-    const PointSet p = read_bytes(read_xyz, text, "scan.xyz");
+    const PointSet p = read_bytes(read_xyz, text, {}, "scan.xyz");
     ASSERT_EQ(p.size(), 4u);
     EXPECT_FALSE(p.has_normals());
     EXPECT_EQ(p.positions[0], Vec3(1, 2, 3));
@@ -574,7 +571,8 @@ TEST(Xyz, ThreeColumnsWithCommentsCrlfAndBlankLines) {
 }
 
 TEST(Xyz, SixColumnsGiveNormals) {
-    const PointSet p = read_bytes(read_xyz, "1 2 3 0 0 1\r\n4 5 6 0 1 0\r\n# end\r\n", "scan.xyz");
+    const PointSet p =
+        read_bytes(read_xyz, "1 2 3 0 0 1\r\n4 5 6 0 1 0\r\n# end\r\n", {}, "scan.xyz");
     ASSERT_EQ(p.size(), 2u);
     ASSERT_EQ(p.normals.size(), 2u);
     EXPECT_EQ(p.positions[1], Vec3(4, 5, 6));
@@ -583,8 +581,8 @@ TEST(Xyz, SixColumnsGiveNormals) {
 }
 
 TEST(Xyz, EmptyOrCommentOnlyIsAnEmptySet) {
-    EXPECT_EQ(read_bytes(read_xyz, "", "scan.xyz").size(), 0u);
-    EXPECT_EQ(read_bytes(read_xyz, "# nothing\n\n   \n", "scan.xyz").size(), 0u);
+    EXPECT_EQ(read_bytes(read_xyz, "", {}, "scan.xyz").size(), 0u);
+    EXPECT_EQ(read_bytes(read_xyz, "# nothing\n\n   \n", {}, "scan.xyz").size(), 0u);
 }
 
 TEST(Xyz, InconsistentColumns) {
@@ -625,7 +623,7 @@ TEST(Obj, VerticesAndNormalsAmongOtherStatements) {
                              "f 1/1/1 2/1/2 3/1/3\r\n"
                              "\r\n"
                              "vp 0.1\r\n";
-    const PointSet p = read_bytes(read_obj, text, "mesh.obj");
+    const PointSet p = read_bytes(read_obj, text, {}, "mesh.obj");
     ASSERT_EQ(p.size(), 3u);
     ASSERT_EQ(p.normals.size(), 3u);
     EXPECT_EQ(p.positions[0], Vec3(1, 2, 3));
@@ -637,14 +635,14 @@ TEST(Obj, VerticesAndNormalsAmongOtherStatements) {
 }
 
 TEST(Obj, NormalCountDifferentFromVertexCountIsReturnedAsRead) {
-    const PointSet p = read_bytes(read_obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n", "a.obj");
+    const PointSet p = read_bytes(read_obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n", {}, "a.obj");
     EXPECT_EQ(p.size(), 3u);
     ASSERT_EQ(p.normals.size(), 1u);
     EXPECT_EQ(p.normals[0], Vec3(0, 0, 1));
 }
 
 TEST(Obj, OnlyFacesAndTexturesGiveAnEmptySet) {
-    const PointSet p = read_bytes(read_obj, "vt 0 0\nf 1 2 3\n", "a.obj");
+    const PointSet p = read_bytes(read_obj, "vt 0 0\nf 1 2 3\n", {}, "a.obj");
     EXPECT_EQ(p.size(), 0u);
     EXPECT_FALSE(p.has_normals());
 }

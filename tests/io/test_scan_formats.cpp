@@ -5,6 +5,7 @@
 #include "errors.h"
 #include "io/point_set_reader.h"
 
+#include "read_bytes.h"
 #include "temp_folder.h"
 
 #include <gtest/gtest.h>
@@ -31,10 +32,9 @@ namespace {
 
 using hrsr::testing::TempFolder;
 
-PointSet read(PointSet (*reader)(std::istream&, const std::string&, const ReadOptions&),
-              const std::string& bytes, ReadOptions options = {}) {
-    std::istringstream in(bytes, std::ios::binary);
-    return reader(in, "scan", options);
+/// Bad files are named "scan" in the messages.
+PointSet read(testing::StreamReader reader, const std::string& bytes, ReadOptions options = {}) {
+    return testing::read_bytes(reader, bytes, options, "scan");
 }
 
 /// Reading must throw an IoError starting with the file name and containing `word`.

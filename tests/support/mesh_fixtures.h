@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <set>
 #include <vector>
 
 namespace hrsr::testing {
@@ -83,6 +84,13 @@ inline TestMesh square_patch(int n = 8, double z = 0.0) {
 inline TestMesh shifted(TestMesh m, const Vec3& d) {
     for (Vec3& p : m.positions) p += d;
     return m;
+}
+
+/// The vertices some triangle uses: a repair that keeps every point keeps this set.
+inline std::set<std::uint32_t> used_vertices(const std::vector<Triangle>& triangles) {
+    std::set<std::uint32_t> used;
+    for (const Triangle& t : triangles) used.insert(t.begin(), t.end());
+    return used;
 }
 
 } // namespace hrsr::testing
