@@ -3,9 +3,8 @@
 #include "check_command.h"
 #include "command_line.h"
 #include "errors.h"
-#include "huge_pages.h"
+#include "malloc_policy.h"
 #include "normals_command.h"
-#include "process_stats.h"
 #include "reconstruct_command.h"
 #include "usage_error.h"
 

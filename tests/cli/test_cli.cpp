@@ -169,7 +169,7 @@ TEST_F(Cli, SameBytesForOneAndTwoThreads) {
     EXPECT_GT(slurp(path("a.ply")).size(), 10000u * 24);
 }
 
-// hrsr starts itself again once with glibc's huge pages asked for (apps/huge_pages.h), unless
+// hrsr starts itself again once with glibc's huge pages asked for (apps/malloc_policy.h), unless
 // GLIBC_TUNABLES names them: the arguments (a path with a space among them), the exit code, the
 // messages and the mesh must be the same either way.
 TEST_F(Cli, RestartForHugePagesChangesNothingButSpeed) {

@@ -1,4 +1,6 @@
-// Transparent huge pages for the command-line tool's heap.
+// How the command-line tool's malloc takes memory from the system and gives it back. Both settings
+// are process-wide, so only the command-line tool makes them, first thing in main(); never the
+// library or the MeshLab plugin.
 #pragma once
 
 namespace hrsr::app {
@@ -12,7 +14,12 @@ namespace hrsr::app {
 /// starts, hence the new start. Returns (and nothing changes) when it does not apply, when the exec
 /// fails, or when GLIBC_TUNABLES already names glibc.malloc.hugetlb:
 /// `GLIBC_TUNABLES=glibc.malloc.hugetlb=0` keeps a run in one process (for a debugger or valgrind).
-/// Process-wide, so only the command-line tool calls it, first thing in main().
 void ask_for_huge_pages(char** argv);
+
+/// Makes large blocks go back to the system as soon as they are freed. glibc otherwise raises
+/// its mmap threshold after each large free, and later blocks of that size stay in the heap
+/// after they are freed: the phases' big temporary arrays then add up in the resident set
+/// (measured on the bunny scans: 185 MB peak instead of 149 MB).
+void release_large_blocks_eagerly();
 
 } // namespace hrsr::app

@@ -1,4 +1,4 @@
-#include "huge_pages.h"
+#include "malloc_policy.h"
 
 #include <cstdlib>
 #include <cstring>
@@ -6,6 +6,10 @@
 #include <string>
 
 #include <unistd.h>
+
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 namespace hrsr::app {
 
@@ -50,6 +54,12 @@ void ask_for_huge_pages(char** argv) {
 #endif
 #endif
     (void)argv;
+}
+
+void release_large_blocks_eagerly() {
+#ifdef __GLIBC__
+    mallopt(M_MMAP_THRESHOLD, 1 << 20); // a fixed threshold: no more dynamic raising
+#endif
 }
 
 } // namespace hrsr::app
