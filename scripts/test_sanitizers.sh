@@ -22,9 +22,8 @@ FUZZ_SECONDS=${HRSR_FUZZ_SECONDS:-60}
 JOBS=$(nproc)
 TSAN=${HRSR_TSAN_BUILD_DIR:-$ROOT/build-tsan}
 STAGES=${HRSR_SANITIZER_STAGES:-asan fuzz tsan}
-# -O1, line tables only and a unity build (CMake joins a target's sources eight at a time, so
-# vcglib, Eigen and the standard headers are compiled once per eight files): compiling is most of
-# this script's time; traces keep file:line.
+# -O1, line tables only and a unity build (see scripts/build.sh): compiling is most of this
+# script's time; traces keep file:line.
 OPT=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
      -DCMAKE_UNITY_BUILD=ON)
 # Not under the sanitizers: no plugin, no benchmark programs (bench/ only measures; compiling its
